@@ -1,0 +1,54 @@
+# The two README commands: `make run` and `make test`. Both install whatever Debian package is
+# missing first (apt-get; sudo when not root), then build Release into build/.
+BUILD      ?= build
+JOBS       ?= $(shell nproc)
+PACKAGES   := cmake g++ make pkg-config libtbb-dev libeigen3-dev libhdf5-dev libspdlog-dev \
+              doctest-dev libtomlplusplus-dev libcli11-dev libbenchmark-dev
+PY_PACKAGES := python3-numpy python3-h5py python3-matplotlib
+SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+.PHONY: all deps py-deps build run test test-sanitize bench plots docs clean
+
+all: build
+
+deps:
+	@missing=""; for p in $(PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing missing packages:$$missing"; \
+	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing; \
+	fi
+
+py-deps:
+	@missing=""; for p in $(PY_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing; \
+	fi
+
+build: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake --build $(BUILD) -j$(JOBS)
+
+run: build
+	$(BUILD)/ryushi run scenes/dam_break_2d.toml --out out/dam_break_2d
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
+
+# Same tests under AddressSanitizer + UndefinedBehaviorSanitizer.
+test-sanitize: deps
+	cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRYUSHI_SANITIZE=ON
+	cmake --build build-sanitize -j$(JOBS)
+	cd build-sanitize && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j$(JOBS)
+
+bench: build
+	$(BUILD)/bench/ryushi_bench_neighbours
+	tools/bench_dam_break.sh $(BUILD)
+
+plots: build py-deps
+	/usr/bin/python3 tools/plot_dam_break.py out/dam_break_2d docs/img/dam_break_front.png
+
+docs: build
+	$(BUILD)/ryushi keys --markdown > docs/scenes.md
+
+clean:
+	rm -rf $(BUILD) build-sanitize

@@ -1,0 +1,423 @@
+#include "app/run.hpp"
+
+#include <spdlog/spdlog.h>
+#include <tbb/global_control.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "app/exit_codes.hpp"
+#include "app/progress.hpp"
+#include "ecs/scheduler.hpp"
+#include "io/json.hpp"
+#include "methods/wcsph.hpp"
+#include "scene/scene.hpp"
+#include "systems/io/atomic_file.hpp"
+#include "systems/io/hdf5_frame.hpp"
+#include "systems/integrate/time_step.hpp"
+#include "systems/io/xdmf.hpp"
+#include "systems/neighbour/neighbour_search.hpp"
+#include "systems/probes/probes.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ryushi {
+
+namespace {
+
+std::atomic<bool> g_interrupted{false};
+extern "C" void on_signal(int) { g_interrupted = true; }
+
+class NumericalFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The first fluid particle (lowest index) with a non-finite or out-of-domain state.
+template <int D>
+struct HealthCheck {
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  std::size_t index = kNone;
+  std::string column, problem;
+
+  void run(const World<D>& w, const Domain<D>& domain) {
+    auto& x = w.column(components::position);
+    auto& v = w.column(components::velocity);
+    auto& rho = w.column(components::density);
+    auto& p = w.column(components::pressure);
+    auto& kind = w.column(components::kind);
+    auto bad = [&](std::size_t i) -> int {
+      if (kind[i] != kFluid) return 0;
+      if (!x[i].allFinite()) return 1;
+      if (!v[i].allFinite()) return 2;
+      if (!std::isfinite(rho[i]) || rho[i] <= 0) return 3;
+      if (!std::isfinite(p[i])) return 4;
+      if (!domain.contains(x[i])) return 5;
+      return 0;
+    };
+    index = tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, w.size(), 8192), kNone,
+        [&](auto r, std::size_t found) {
+          for (std::size_t i = r.begin(); i != r.end() && i < found; ++i)
+            if (bad(i)) return i;
+          return found;
+        },
+        [](std::size_t a, std::size_t b) { return std::min(a, b); });
+    if (index == kNone) return;
+    static const char* columns[] = {"", "position", "velocity", "density", "pressure", "position"};
+    static const char* problems[] = {"", "non-finite position", "non-finite velocity",
+                                     "non-finite or non-positive density", "non-finite pressure",
+                                     "left the domain"};
+    int code = bad(index);
+    column = columns[code];
+    problem = problems[code];
+  }
+};
+
+struct Diagnostics {
+  std::size_t fluid = 0, walls = 0;
+  double fluid_mass = 0, kinetic_energy = 0, max_speed = 0, max_density_deviation = 0;
+};
+
+template <int D>
+Diagnostics diagnose(const World<D>& w, double rho0) {
+  Diagnostics d;
+  auto& kind = w.column(components::kind);
+  auto& m = w.column(components::mass);
+  auto& v = w.column(components::velocity);
+  auto& rho = w.column(components::density);
+  auto& id = w.column(components::id);
+  // The mass is summed in id order, so reordering particles by cell cannot change the total
+  // by round-off: an unchanged set of particles gives a bit-identical mass.
+  std::vector<double> mass_by_id;
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    if (kind[i] != kFluid) {
+      ++d.walls;
+      continue;
+    }
+    ++d.fluid;
+    if (mass_by_id.size() <= std::size_t(id[i])) mass_by_id.resize(id[i] + 1, 0.0);
+    mass_by_id[id[i]] = m[i];
+    d.kinetic_energy += 0.5 * m[i] * v[i].squaredNorm();
+    d.max_speed = std::max(d.max_speed, v[i].norm());
+    d.max_density_deviation = std::max(d.max_density_deviation, std::abs(rho[i] / rho0 - 1));
+  }
+  for (double mi : mass_by_id) d.fluid_mass += mi;
+  return d;
+}
+
+std::string probes_csv(const std::vector<ProbeSpec>& probes, const std::vector<std::vector<double>>& rows) {
+  std::ostringstream out;
+  out.precision(10);
+  out << "time";
+  for (auto& p : probes) out << "," << p.name;
+  out << "\n";
+  for (auto& r : rows) {
+    for (std::size_t k = 0; k < r.size(); ++k) out << (k ? "," : "") << r[k];
+    out << "\n";
+  }
+  return out.str();
+}
+
+template <int D>
+class Runner {
+ public:
+  Runner(const Scene& scene, const RunOptions& opt) : scene_(scene), opt_(opt), profiler_(opt.trace) {}
+
+  // Everything that can reject the input, before any file is written.
+  void prepare() {
+    params_ = wcsph_parameters<D>(scene_);
+    populate_world<D>(scene_, params_, world_);
+    res_.ensure(domain_resource<D>) = params_.domain;
+    res_.ensure(resources::time) = 0.0;
+    scheduler_ = std::make_unique<Scheduler<D>>(wcsph_pipeline<D>(scene_, params_), world_, res_, profiler_);
+    scheduler_->initialise();
+    for (auto& f : scene_.output_fields)
+      if (!world_.has(f)) {
+        std::string list;
+        for (auto& n : world_.column_names()) list += (list.empty() ? "" : ", ") + n;
+        throw SceneError(scene_.path + ": [output] fields: no per-particle field '" + f +
+                         "' in this pipeline; available: " + list);
+      }
+    if (scene_.fixed_dt > 0) {
+      res_.ensure(resources::dt) = scene_.fixed_dt;
+    } else {
+      double g = params_.gravity.norm();
+      TimeStepControl<D> control(params_, scene_.cfl);
+      res_.ensure(resources::dt) = control.limit(0.0, g);
+    }
+    HealthCheck<D> h;
+    h.run(world_, params_.domain);
+    if (h.index != HealthCheck<D>::kNone)
+      throw SceneError(scene_.path + ": the initial state is invalid: particle id " +
+                       std::to_string(world_.column(components::id)[h.index]) + " " + h.problem);
+  }
+
+  int run() {
+    out_ = opt_.out_dir.empty() ? fs::path("out") / scene_.name : fs::path(opt_.out_dir);
+    fs::create_directories(out_ / "frames");
+    for (auto& e : fs::directory_iterator(out_ / "frames"))  // a previous run's frames
+      if (e.path().extension() == ".h5" || e.path().extension() == ".tmp") fs::remove(e.path());
+    fs::remove(out_ / "trace.json");
+    wall_start_ = std::chrono::steady_clock::now();
+    initial_ = diagnose(world_, params_.rho0);
+    slot_output_ = profiler_.slot("output");
+    slot_probes_ = profiler_.slot("probes");
+    slot_reorder_ = profiler_.slot("reorder_by_cell");
+    slot_health_ = profiler_.slot("health_check");
+    if (!opt_.quiet) {
+      spdlog::info("{}: {}D {}, {} fluid + {} wall particles, h = {:.4g} m, c0 = {:.4g} m/s -> {}",
+                   scene_.name, D, scene_.method, initial_.fluid, initial_.walls, params_.kernel.h(),
+                   params_.c0, out_.string());
+    }
+
+    std::string status = "completed", message;
+    int code = kExitDone;
+    Progress progress(scene_.end_time, opt_.quiet);
+    try {
+      sample_probes_now();
+      write_output();
+      while (time_ < scene_.end_time * (1 - 1e-12)) {
+        if (scene_.max_steps > 0 && step_ >= scene_.max_steps) break;
+        if (g_interrupted) {
+          status = "interrupted";
+          code = kExitInterrupted;
+          message = "interrupted by signal at t = " + std::to_string(time_) + " s";
+          break;
+        }
+        advance();
+        if (time_ >= next_probe_ * (1 - 1e-12)) sample_probes_now();
+        if (time_ >= next_output_ * (1 - 1e-12)) write_output();
+        progress.update(time_, step_);
+      }
+      if (frames_.empty() || frames_.back().time < time_) write_output();
+    } catch (const NumericalFailure& e) {
+      status = "failed";
+      code = kExitNumericalFailure;
+      message = e.what();
+    }
+    progress.finish();
+    finish(status, message);
+    if (code == kExitNumericalFailure) std::fprintf(stderr, "ryushi: numerical failure: %s\n", message.c_str());
+    if (code == kExitInterrupted) std::fprintf(stderr, "ryushi: %s\n", message.c_str());
+    return code;
+  }
+
+ private:
+  void advance() {
+    if (scene_.reorder_interval > 0 && step_ > 0 && step_ % scene_.reorder_interval == 0) {
+      Profiler::Scope t(profiler_, slot_reorder_);
+      auto order = res_.get(cell_grid_resource<D>).sorted();
+      if (order.size() == world_.size()) {
+        CommandBuffer<D> cb;
+        cb.permute({order.begin(), order.end()});
+        cb.apply(world_);
+      }
+    }
+    double& dt = res_.get(resources::dt);
+    if (scene_.fixed_dt > 0) dt = scene_.fixed_dt;
+    if (!(dt >= scene_.dt_min))
+      throw NumericalFailure("step " + std::to_string(step_) + " (t = " + fmt(time_) + " s): time step " +
+                             fmt(dt) + " s fell below time.dt_min = " + fmt(scene_.dt_min) +
+                             " s (system 'time_step_control')");
+    dt = std::min(dt, scene_.end_time - time_);
+    dt_used_ = dt;
+    auto begin = std::chrono::steady_clock::now();
+    try {
+      scheduler_->step();
+    } catch (const AccessViolation&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw NumericalFailure("step " + std::to_string(step_) + ": " + e.what());
+    }
+    profiler_.add_step_time(std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
+    time_ += dt_used_;
+    res_.get(resources::time) = time_;
+    ++step_;
+    Profiler::Scope t(profiler_, slot_health_);
+    HealthCheck<D> h;
+    h.run(world_, params_.domain);
+    if (h.index != HealthCheck<D>::kNone) {
+      auto& x = world_.column(components::position)[h.index];
+      std::ostringstream m;
+      m << "step " << step_ << " (t = " << time_ << " s): particle id " << world_.column(components::id)[h.index]
+        << " " << h.problem << " at (";
+      for (int a = 0; a < D; ++a) m << (a ? ", " : "") << x[a];
+      m << ") after system '" << scheduler_->last_writer(h.column) << "'";
+      throw NumericalFailure(m.str());
+    }
+  }
+
+  void sample_probes_now() {
+    next_probe_ = (std::floor(time_ / scene_.probe_interval + 1e-9) + 1) * scene_.probe_interval;
+    if (scene_.probes.empty()) return;
+    Profiler::Scope t(profiler_, slot_probes_);
+    auto values = sample_probes<D>(scene_.probes, world_, params_.kernel, scene_.spacing);
+    values.insert(values.begin(), time_);
+    probe_rows_.push_back(std::move(values));
+  }
+
+  void write_output() {
+    next_output_ = (std::floor(time_ / scene_.output_interval + 1e-9) + 1) * scene_.output_interval;
+    Profiler::Scope t(profiler_, slot_output_);
+    char name[64];
+    std::snprintf(name, sizeof name, "frames/frame_%05zu.h5", frames_.size());
+    auto fields = write_frame<D>(out_ / name, world_, scene_.output_fields, time_, step_);
+    frames_.push_back({name, time_, world_.size(), fields});
+    write_text_atomic(out_ / "particles.xdmf", xdmf_document(D, frames_));
+    if (!scene_.probes.empty()) write_text_atomic(out_ / "probes.csv", probes_csv(scene_.probes, probe_rows_));
+    write_summary("running", "");
+  }
+
+  void finish(const std::string& status, const std::string& message) {
+    if (!scene_.probes.empty()) write_text_atomic(out_ / "probes.csv", probes_csv(scene_.probes, probe_rows_));
+    write_summary(status, message);
+    write_text_atomic(out_ / "profile.json", profiler_.json());
+    if (opt_.trace) write_text_atomic(out_ / "trace.json", profiler_.trace_json());
+    if (!opt_.quiet) {
+      double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
+      std::printf("%s", profiler_.table().c_str());
+      std::printf("%s: %s, %lld steps, t = %.6g s, wall %.2f s, %.3g particle-steps/s\n", scene_.name.c_str(),
+                  status.c_str(), step_, time_, wall, wall > 0 ? world_.size() * double(step_) / wall : 0.0);
+    }
+  }
+
+  void write_summary(const std::string& status, const std::string& message) {
+    auto now = diagnose(world_, params_.rho0);
+    double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
+    const auto& nl = res_.get(neighbours_resource);
+    JsonWriter w;
+    w.begin_object();
+    w.key("scene").value(scene_.name);
+    w.key("scene_file").value(scene_.path);
+    w.key("method").value(scene_.method);
+    w.key("dimension").value(std::int64_t{D});
+    w.key("status").value(status);
+    w.key("message").value(message);
+    w.key("particles").value(static_cast<std::int64_t>(world_.size()));
+    w.key("fluid_particles").value(static_cast<std::int64_t>(now.fluid));
+    w.key("wall_particles").value(static_cast<std::int64_t>(now.walls));
+    w.key("steps").value(static_cast<std::int64_t>(step_));
+    w.key("simulated_time").value(time_);
+    w.key("end_time").value(scene_.end_time);
+    w.key("wall_time_s").value(wall);
+    w.key("particle_steps_per_second").value(wall > 0 ? world_.size() * double(step_) / wall : 0.0);
+    w.key("frames").value(static_cast<std::int64_t>(frames_.size()));
+    w.key("bytes_per_particle").begin_object();
+    w.key("columns").value(static_cast<std::int64_t>(world_.bytes_per_particle()));
+    w.key("neighbour_list").value(world_.size() ? double(nl.bytes()) / world_.size() : 0.0);
+    w.end_object();
+    w.key("parameters").begin_object();
+    w.key("spacing").value(scene_.spacing);
+    w.key("smoothing_length").value(params_.kernel.h());
+    w.key("sound_speed").value(params_.c0);
+    w.key("last_dt").value(dt_used_);
+    w.end_object();
+    w.key("diagnostics").begin_object();
+    w.key("fluid_mass_initial").value(initial_.fluid_mass);
+    w.key("fluid_mass").value(now.fluid_mass);
+    w.key("fluid_mass_relative_change").value(initial_.fluid_mass > 0 ? (now.fluid_mass - initial_.fluid_mass) / initial_.fluid_mass : 0.0);
+    w.key("kinetic_energy").value(now.kinetic_energy);
+    w.key("max_speed").value(now.max_speed);
+    w.key("max_density_deviation").value(now.max_density_deviation);
+    w.end_object();
+    w.end_object();
+    write_text_atomic(out_ / "summary.json", w.str());
+  }
+
+  static std::string fmt(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.6g", v);
+    return b;
+  }
+
+  const Scene& scene_;
+  const RunOptions& opt_;
+  Profiler profiler_;
+  WcsphParameters<D> params_;
+  World<D> world_;
+  Resources res_;
+  std::unique_ptr<Scheduler<D>> scheduler_;
+  fs::path out_;
+  std::vector<FrameRecord> frames_;
+  std::vector<std::vector<double>> probe_rows_;
+  Diagnostics initial_;
+  double time_ = 0, dt_used_ = 0, next_output_ = 0, next_probe_ = 0;
+  long long step_ = 0;
+  std::size_t slot_output_ = 0, slot_probes_ = 0, slot_reorder_ = 0, slot_health_ = 0;
+  std::chrono::steady_clock::time_point wall_start_;
+};
+
+std::vector<std::string> with_end_time(const RunOptions& opt) {
+  auto sets = opt.sets;
+  if (opt.end_time) sets.push_back("time.end=" + std::to_string(*opt.end_time));
+  return sets;
+}
+
+template <int D>
+int run_dim(const Scene& scene, const RunOptions& opt) {
+  Runner<D> runner(scene, opt);
+  runner.prepare();
+  return runner.run();
+}
+
+}  // namespace
+
+int run_scene(const RunOptions& opt) {
+  std::unique_ptr<tbb::global_control> threads;
+  if (opt.threads > 0)
+    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, opt.threads);
+  g_interrupted = false;
+  auto old_int = std::signal(SIGINT, on_signal);
+  auto old_term = std::signal(SIGTERM, on_signal);
+  int code = kExitInternal;
+  try {
+    Scene scene = load_scene(opt.scene, with_end_time(opt));
+    code = scene.dimension == 2 ? run_dim<2>(scene, opt) : run_dim<3>(scene, opt);
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "ryushi: %s\n", e.what());
+    code = kExitBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ryushi: internal error: %s\n", e.what());
+    code = kExitInternal;
+  }
+  std::signal(SIGINT, old_int);
+  std::signal(SIGTERM, old_term);
+  return code;
+}
+
+int check_scene(const std::string& path, const std::vector<std::string>& sets) {
+  try {
+    Scene scene = load_scene(path, sets);
+    auto build = [&](auto dim) {
+      constexpr int D = decltype(dim)::value;
+      World<D> world;
+      Resources res;
+      Profiler profiler;
+      auto p = wcsph_parameters<D>(scene);
+      populate_world<D>(scene, p, world);
+      Scheduler<D> s(wcsph_pipeline<D>(scene, p), world, res, profiler);
+      std::printf("%s: OK (%dD %s, %zu particles, %zu systems in the step graph)\n", path.c_str(), D,
+                  scene.method.c_str(), world.size(), s.pipeline().size());
+    };
+    if (scene.dimension == 2)
+      build(std::integral_constant<int, 2>{});
+    else
+      build(std::integral_constant<int, 3>{});
+    return kExitDone;
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "ryushi: %s\n", e.what());
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ryushi: internal error: %s\n", e.what());
+    return kExitInternal;
+  }
+}
+
+}  // namespace ryushi

@@ -1,0 +1,24 @@
+#pragma once
+// `ryushi run` and `ryushi check` as library calls (the CLI and the tests share them).
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ryushi {
+
+struct RunOptions {
+  std::string scene;
+  std::string out_dir;  // default out/<scene name>
+  int threads = 0;      // 0: all cores
+  std::optional<double> end_time;
+  std::vector<std::string> sets;
+  bool trace = false;
+  bool quiet = false;
+};
+
+// Runs a scene; returns the exit code (app/exit_codes.hpp). Messages go to stderr/stdout.
+int run_scene(const RunOptions& options);
+// Validates a scene (and builds its pipeline without running it); returns the exit code.
+int check_scene(const std::string& scene, const std::vector<std::string>& sets);
+
+}  // namespace ryushi

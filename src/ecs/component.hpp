@@ -1,0 +1,66 @@
+#pragma once
+// Component tokens: a static, typed name for a structure-of-arrays column.
+//   inline constexpr Component<Scalar> density{"density"};
+// The kind tag decides the element type once the dimension is known.
+#include <cstdint>
+#include <string_view>
+
+#include "ecs/math.hpp"
+
+namespace ryushi {
+
+struct Scalar {};  // double per particle
+struct Vector {};  // Vec<D> per particle
+struct Tensor {};  // Mat<D> per particle
+struct Flags {};   // int32 per particle (kind, ids, bit flags)
+
+template <class Kind, int D>
+struct element_of;
+template <int D>
+struct element_of<Scalar, D> {
+  using type = double;
+};
+template <int D>
+struct element_of<Vector, D> {
+  using type = Vec<D>;
+};
+template <int D>
+struct element_of<Tensor, D> {
+  using type = Mat<D>;
+};
+template <int D>
+struct element_of<Flags, D> {
+  using type = std::int32_t;
+};
+template <class Kind, int D>
+using element_t = typename element_of<Kind, D>::type;
+
+template <class Kind>
+struct Component {
+  using kind = Kind;
+  std::string_view name;
+};
+
+// Particle kinds stored in the `kind` column (the output contract: 0 fluid, 1 wall, 2+ other).
+enum ParticleKind : std::int32_t { kFluid = 0, kWall = 1 };
+
+// Components every method shares. Systems of one family may declare their own next to them.
+namespace components {
+inline constexpr Component<Flags> id{"id"};
+inline constexpr Component<Flags> kind{"kind"};
+inline constexpr Component<Vector> position{"position"};
+inline constexpr Component<Vector> velocity{"velocity"};
+inline constexpr Component<Vector> acceleration{"acceleration"};
+inline constexpr Component<Scalar> mass{"mass"};
+inline constexpr Component<Scalar> density{"density"};
+inline constexpr Component<Scalar> density_rate{"density_rate"};
+inline constexpr Component<Scalar> pressure{"pressure"};
+inline constexpr Component<Scalar> viscosity{"viscosity"};
+inline constexpr Component<Vector> density_gradient{"density_gradient"};
+inline constexpr Component<Vector> wall_velocity{"wall_velocity"};
+inline constexpr Component<Vector> position_start{"position_start"};
+inline constexpr Component<Vector> velocity_start{"velocity_start"};
+inline constexpr Component<Scalar> density_start{"density_start"};
+}  // namespace components
+
+}  // namespace ryushi

@@ -1,0 +1,60 @@
+#pragma once
+// Resources: named, typed singletons shared by systems (neighbour list, dt, domain, matrices).
+// Like components they are declared in a system's access set, so the scheduler orders systems
+// that touch the same resource.
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <typeindex>
+
+namespace ryushi {
+
+template <class T>
+struct Resource {
+  using type = T;
+  std::string_view name;
+};
+
+class Resources {
+ public:
+  template <class T>
+  T& ensure(Resource<T> r) {
+    auto it = slots_.find(std::string(r.name));
+    if (it == slots_.end()) {
+      Slot s{std::type_index(typeid(T)), std::make_shared<T>()};
+      it = slots_.emplace(std::string(r.name), std::move(s)).first;
+    }
+    return cast<T>(it->second, r.name);
+  }
+  template <class T>
+  T& get(Resource<T> r) {
+    auto it = slots_.find(std::string(r.name));
+    if (it == slots_.end())
+      throw std::logic_error("resource '" + std::string(r.name) + "' was never created");
+    return cast<T>(it->second, r.name);
+  }
+  bool has(std::string_view name) const { return slots_.count(std::string(name)) != 0; }
+
+ private:
+  struct Slot {
+    std::type_index type;
+    std::shared_ptr<void> value;
+  };
+  template <class T>
+  static T& cast(Slot& s, std::string_view name) {
+    if (s.type != std::type_index(typeid(T)))
+      throw std::logic_error("resource '" + std::string(name) + "' used with the wrong type");
+    return *static_cast<T*>(s.value.get());
+  }
+  std::map<std::string, Slot> slots_;
+};
+
+// Resources every method shares.
+namespace resources {
+inline constexpr Resource<double> dt{"dt"};
+inline constexpr Resource<double> time{"time"};
+}  // namespace resources
+
+}  // namespace ryushi

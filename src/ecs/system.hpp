@@ -1,0 +1,78 @@
+#pragma once
+// A system: a named piece of work over the world with a declared access set. Systems obtain
+// their columns and resources through SystemContext using the same tokens they declare, and
+// any access outside the declaration throws AccessViolation (per system run, not per particle,
+// so the check stays on in every build type).
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "ecs/access.hpp"
+#include "ecs/world.hpp"
+
+namespace ryushi {
+
+class AccessViolation : public std::logic_error {
+ public:
+  using std::logic_error::logic_error;
+};
+
+template <int D>
+class SystemContext {
+ public:
+  SystemContext(World<D>& world, Resources& res, const Access& access, std::string_view system)
+      : world_(world), res_(res), access_(access), system_(system) {}
+
+  std::size_t size() const { return world_.size(); }
+
+  template <class Kind>
+  std::span<const element_t<Kind, D>> read(Component<Kind> c) const {
+    if (!access_.may_read(std::string(c.name))) violation("reads", "component", c.name);
+    return world_.column(c);
+  }
+  template <class Kind>
+  std::span<element_t<Kind, D>> write(Component<Kind> c) const {
+    if (!access_.may_write(std::string(c.name))) violation("writes", "component", c.name);
+    return world_.column(c);
+  }
+  template <class T>
+  const T& read(Resource<T> r) const {
+    if (!access_.may_read(std::string(r.name))) violation("reads", "resource", r.name);
+    return res_.get(r);
+  }
+  template <class T>
+  T& write(Resource<T> r) const {
+    if (!access_.may_write(std::string(r.name))) violation("writes", "resource", r.name);
+    return res_.get(r);
+  }
+  std::string_view system_name() const { return system_; }
+
+ private:
+  [[noreturn]] void violation(const char* verb, const char* what, std::string_view name) const {
+    throw AccessViolation("system '" + std::string(system_) + "' " + verb + " " + what + " '" +
+                          std::string(name) + "' without declaring it");
+  }
+  World<D>& world_;
+  Resources& res_;
+  const Access& access_;
+  std::string_view system_;
+};
+
+template <int D>
+class System {
+ public:
+  virtual ~System() = default;
+  virtual std::string name() const = 0;
+  virtual Access access() const = 0;
+  // Called once before the first step, outside the flow graph: may allocate and fill columns
+  // (initial conditions) and create resources.
+  virtual void initialise(World<D>&, Resources&) {}
+  virtual void run(SystemContext<D>& ctx) = 0;
+};
+
+template <int D>
+using SystemPtr = std::shared_ptr<System<D>>;
+
+}  // namespace ryushi

@@ -1,0 +1,36 @@
+#include "methods/system_registry.hpp"
+
+#include <map>
+#include <stdexcept>
+
+namespace ryushi {
+
+namespace {
+// Function-local so registration from any translation unit's static initialiser is safe.
+std::map<std::string, SystemRegistryEntry>& registry() {
+  static std::map<std::string, SystemRegistryEntry> r;
+  return r;
+}
+}  // namespace
+
+bool register_system(const std::string& name, SystemRegistryEntry entry) {
+  if (!registry().emplace(name, std::move(entry)).second)
+    throw std::logic_error("system '" + name + "' registered twice");
+  return true;
+}
+
+std::vector<std::string> system_registry_names() {
+  std::vector<std::string> names;
+  for (auto& [n, _] : registry()) names.push_back(n);
+  return names;
+}
+
+bool system_registered(const std::string& name) { return registry().count(name) != 0; }
+
+const SystemRegistryEntry& system_registry_entry(const std::string& name) {
+  auto it = registry().find(name);
+  if (it == registry().end()) throw std::invalid_argument("no system registered as '" + name + "'");
+  return it->second;
+}
+
+}  // namespace ryushi

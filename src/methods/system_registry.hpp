@@ -1,0 +1,55 @@
+#pragma once
+// System registry: user systems register themselves by name next to their implementation
+// (no central list to edit). A scene adds them with [[systems]] name = "...", and the
+// scheduler places them in the flow graph by their declared access.
+//
+//   RYUSHI_REGISTER_SYSTEM(MySystem, "my_system", "What it does.", { KeySpec... });
+// where MySystem<D> has a constructor MySystem(const toml::table& params, const WcsphParameters<D>&).
+#include <toml++/toml.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ecs/system.hpp"
+#include "scene/schema.hpp"
+#include "systems/fluid/wcsph_parameters.hpp"
+
+namespace ryushi {
+
+struct SystemRegistryEntry {
+  std::string doc;
+  std::vector<KeySpec> params;
+  std::function<SystemPtr<2>(const toml::table&, const WcsphParameters<2>&)> make2;
+  std::function<SystemPtr<3>(const toml::table&, const WcsphParameters<3>&)> make3;
+};
+
+bool register_system(const std::string& name, SystemRegistryEntry entry);
+std::vector<std::string> system_registry_names();
+bool system_registered(const std::string& name);
+const SystemRegistryEntry& system_registry_entry(const std::string& name);
+
+template <int D>
+SystemPtr<D> make_registered_system(const std::string& name, const toml::table& params,
+                                    const WcsphParameters<D>& physics) {
+  auto& e = system_registry_entry(name);
+  if constexpr (D == 2)
+    return e.make2(params, physics);
+  else
+    return e.make3(params, physics);
+}
+
+template <template <int> class T>
+SystemRegistryEntry registry_entry(std::string doc, std::vector<KeySpec> params) {
+  return {std::move(doc), std::move(params),
+          [](const toml::table& p, const WcsphParameters<2>& w) { return std::make_shared<T<2>>(p, w); },
+          [](const toml::table& p, const WcsphParameters<3>& w) { return std::make_shared<T<3>>(p, w); }};
+}
+
+#define RYUSHI_CONCAT_INNER(a, b) a##b
+#define RYUSHI_CONCAT(a, b) RYUSHI_CONCAT_INNER(a, b)
+#define RYUSHI_REGISTER_SYSTEM(TEMPLATE, NAME, DOC, ...)                           \
+  [[maybe_unused]] static const bool RYUSHI_CONCAT(ryushi_registered_, __LINE__) = \
+      ::ryushi::register_system(NAME, ::ryushi::registry_entry<TEMPLATE>(DOC, __VA_ARGS__))
+
+}  // namespace ryushi

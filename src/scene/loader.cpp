@@ -1,0 +1,419 @@
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <spdlog/spdlog.h>
+
+#include "methods/system_registry.hpp"
+#include "scene/scene.hpp"
+#include "scene/schema.hpp"
+
+namespace ryushi {
+
+double Scene::fluid_height() const {
+  double h = 0;
+  for (auto& b : fluid) h = std::max(h, b.max.back() - b.min.back());
+  return h;
+}
+double Scene::gravity_magnitude() const {
+  double g2 = 0;
+  for (double g : gravity) g2 += g * g;
+  return std::sqrt(g2);
+}
+double Scene::resolved_sound_speed() const {
+  if (sound_speed > 0) return sound_speed;
+  double c = sound_speed_factor * std::sqrt(2.0 * gravity_magnitude() * fluid_height());
+  return c > 0 ? c : sound_speed_factor;  // no gravity: c0 = factor (m/s), documented in scenes.md
+}
+
+namespace {
+
+// Validation state: the file, the parsed tree and where each overridden key came from.
+class Validator {
+ public:
+  Validator(std::string path, toml::table& root) : path_(std::move(path)), root_(root) {}
+
+  std::map<std::string, std::string> overridden;  // "section.key" -> "--set section.key=value"
+
+  [[noreturn]] void fail(const toml::node* node, const std::string& where_path, const std::string& msg) const {
+    fail_at(node ? &node->source() : nullptr, where_path, msg);
+  }
+  [[noreturn]] void fail_at(const toml::source_region* src, const std::string& where_path, const std::string& msg) const {
+    auto o = overridden.find(where_path);
+    if (o != overridden.end()) throw SceneError(o->second + ": " + msg);
+    std::ostringstream out;
+    out << path_;
+    if (src && src->begin) out << ":" << src->begin.line << ":" << src->begin.column;
+    out << ": " << msg;
+    throw SceneError(out.str());
+  }
+
+  int dimension = 2;
+
+  void check_table(toml::table& table, const std::string& label, const std::string& path_prefix,
+                   const std::vector<KeySpec>& keys, const toml::node* table_node) {
+    std::vector<std::string> names;
+    for (auto& k : keys) names.push_back(k.key);
+    for (auto& [k, node] : table) {
+      std::string key(k.str());
+      const KeySpec* spec = find_key(keys, key);
+      if (!spec) {
+        std::string hint = closest_name(key, names);
+        fail_at(&k.source(), path_prefix + key,
+             "unknown key '" + key + "' in " + label + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
+      }
+      check_value(node, *spec, label, path_prefix + key);
+    }
+    for (auto& k : keys) {
+      if (table.contains(k.key)) continue;
+      if (k.required) fail(table_node, path_prefix + k.key, label + " is missing required key '" + k.key + "'");
+      if (!k.default_value.empty() && k.default_value.front() != '(') {
+        auto parsed = toml::parse("v = " + k.default_value);
+        table.insert(k.key, *parsed["v"].node());
+      }
+    }
+  }
+
+  void check_value(toml::node& node, const KeySpec& spec, const std::string& label, const std::string& path) {
+    auto bad_type = [&] {
+      fail(&node, path, "'" + spec.key + "' in " + label + " must be " + type_name(spec.type));
+    };
+    auto check_range = [&](double v) {
+      if (!std::isfinite(v)) fail(&node, path, "'" + spec.key + "' in " + label + " must be finite");
+      bool low = spec.min && (spec.min_exclusive ? v <= *spec.min : v < *spec.min);
+      bool high = spec.max && v > *spec.max;
+      if (low || high) {
+        std::ostringstream m;
+        m << "'" << spec.key << "' in " << label << " is " << v << "; it must be";
+        if (spec.min) m << (spec.min_exclusive ? " > " : " >= ") << *spec.min;
+        if (spec.min && spec.max) m << " and";
+        if (spec.max) m << " <= " << *spec.max;
+        fail(&node, path, m.str());
+      }
+    };
+    switch (spec.type) {
+      case KeyType::Integer:
+        if (!node.is_integer()) bad_type();
+        check_range(static_cast<double>(*node.value<long long>()));
+        break;
+      case KeyType::Float:
+        if (!node.is_number()) bad_type();
+        check_range(*node.value<double>());
+        break;
+      case KeyType::Bool:
+        if (!node.is_boolean()) bad_type();
+        break;
+      case KeyType::String: {
+        if (!node.is_string()) bad_type();
+        std::string v = *node.value<std::string>();
+        if (!spec.choices.empty() && std::find(spec.choices.begin(), spec.choices.end(), v) == spec.choices.end()) {
+          std::string list;
+          for (auto& c : spec.choices) list += (list.empty() ? "" : ", ") + c;
+          std::string hint = closest_name(v, spec.choices);
+          fail(&node, path, "'" + spec.key + "' in " + label + " is '" + v + "'; allowed: " + list +
+                                (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+        }
+        break;
+      }
+      case KeyType::Vector:
+      case KeyType::BoolVector: {
+        auto* arr = node.as_array();
+        if (!arr) bad_type();
+        if (static_cast<int>(arr->size()) != dimension)
+          fail(&node, path, "'" + spec.key + "' in " + label + " has " + std::to_string(arr->size()) +
+                                " values; the scene is " + std::to_string(dimension) + "D");
+        for (auto& e : *arr) {
+          if (spec.type == KeyType::Vector) {
+            if (!e.is_number()) bad_type();
+            if (!std::isfinite(*e.value<double>()))
+              fail(&e, path, "'" + spec.key + "' in " + label + " must be finite");
+          } else if (!e.is_boolean()) {
+            bad_type();
+          }
+        }
+        break;
+      }
+      case KeyType::StringList: {
+        auto* arr = node.as_array();
+        if (!arr) bad_type();
+        for (auto& e : *arr)
+          if (!e.is_string()) bad_type();
+        break;
+      }
+    }
+  }
+
+ private:
+  std::string path_;
+  toml::table& root_;
+};
+
+std::vector<double> vec_of(const toml::node& n) {
+  std::vector<double> v;
+  for (auto& e : *n.as_array()) v.push_back(*e.value<double>());
+  return v;
+}
+
+// Applies one `section.key=value` or `section.N.key=value` override to the tree.
+void apply_override(toml::table& root, const std::string& text, Validator& val) {
+  auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw SceneError("--set " + text + ": expected section.key=value");
+  std::string path = text.substr(0, eq), value = text.substr(eq + 1);
+  std::vector<std::string> parts;
+  std::stringstream ss(path);
+  for (std::string p; std::getline(ss, p, '.');) parts.push_back(p);
+  std::string where = "--set " + text;
+  const SectionSpec* section = parts.empty() ? nullptr : find_section(parts[0]);
+  if (!section) {
+    std::vector<std::string> names;
+    for (auto& s : scene_schema()) names.push_back(s.name);
+    std::string hint = parts.empty() ? "" : closest_name(parts[0], names);
+    throw SceneError(where + ": unknown section '" + (parts.empty() ? "" : parts[0]) + "'" +
+                     (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
+  }
+  toml::table* target = nullptr;
+  std::string key, key_path;
+  if (section->array_of_tables) {
+    if (parts.size() != 3) throw SceneError(where + ": use " + parts[0] + ".N.key for [[" + parts[0] + "]]");
+    auto* arr = root[parts[0]].as_array();
+    std::size_t idx = 0;
+    try {
+      idx = std::stoul(parts[1]);
+    } catch (...) {
+      throw SceneError(where + ": '" + parts[1] + "' is not an index");
+    }
+    if (!arr || idx >= arr->size() || !(*arr)[idx].is_table())
+      throw SceneError(where + ": the scene has no [[" + parts[0] + "]] entry " + parts[1]);
+    target = (*arr)[idx].as_table();
+    key = parts[2];
+    key_path = parts[0] + "." + parts[1] + "." + key;
+  } else {
+    if (parts.size() != 2) throw SceneError(where + ": use section.key");
+    if (!root.contains(parts[0])) root.insert(parts[0], toml::table{});
+    target = root[parts[0]].as_table();
+    if (!target) throw SceneError(where + ": [" + parts[0] + "] is not a table in the scene");
+    key = parts[1];
+    key_path = parts[0] + "." + key;
+  }
+  toml::node_view<toml::node> parsed;
+  toml::table holder;
+  try {
+    holder = toml::parse("v = " + value);
+  } catch (const toml::parse_error&) {
+    holder = toml::table{};
+    holder.insert("v", value);  // a bare word is a string
+  }
+  target->insert_or_assign(key, *holder["v"].node());
+  val.overridden[key_path] = where;
+}
+
+}  // namespace
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  {
+    std::ifstream probe(path);
+    if (!probe) throw SceneError(path + ": cannot read the scene file (" +
+                                 (std::filesystem::exists(path) ? "permission denied" : "no such file") + ")");
+  }
+  toml::table root;
+  try {
+    root = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream out;
+    out << path << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
+    throw SceneError(out.str());
+  }
+  Validator val(path, root);
+  for (auto& o : overrides) apply_override(root, o, val);
+
+  std::vector<std::string> section_names;
+  for (auto& s : scene_schema()) section_names.push_back(s.name);
+  for (auto& [k, node] : root) {
+    std::string name(k.str());
+    if (!find_section(name)) {
+      std::string hint = closest_name(name, section_names);
+      val.fail_at(&k.source(), name, "unknown section '" + name + "'" + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
+    }
+  }
+  // The dimension first: vector lengths depend on it.
+  {
+    auto* scene_tbl = root["scene"].as_table();
+    if (!scene_tbl) val.fail(root["scene"].node(), "scene", "missing required section [scene]");
+    val.check_table(*scene_tbl, "[scene]", "scene.", find_section("scene")->keys, root["scene"].node());
+    val.dimension = static_cast<int>(*(*scene_tbl)["dimension"].value<long long>());
+  }
+  for (auto& s : scene_schema()) {
+    toml::node* node = root.get(s.name);
+    if (!node) {
+      if (s.required) val.fail(nullptr, s.name, "missing required section " + (s.array_of_tables ? "[[" + s.name + "]]" : "[" + s.name + "]"));
+      if (!s.array_of_tables) {
+        root.insert(s.name, toml::table{});
+        val.check_table(*root[s.name].as_table(), "[" + s.name + "]", s.name + ".", s.keys, nullptr);
+      }
+      continue;
+    }
+    if (!s.array_of_tables) {
+      if (!node->is_table()) val.fail(node, s.name, "[" + s.name + "] must be a table");
+      val.check_table(*node->as_table(), "[" + s.name + "]", s.name + ".", s.keys, node);
+      continue;
+    }
+    auto* arr = node->as_array();
+    if (!arr || !arr->is_array_of_tables())
+      val.fail(node, s.name, "'" + s.name + "' must be an array of tables: write [[" + s.name + "]]");
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      auto& t = *(*arr)[i].as_table();
+      std::string label = "[[" + s.name + "]] #" + std::to_string(i);
+      std::string prefix = s.name + "." + std::to_string(i) + ".";
+      if (s.name != "systems") {
+        val.check_table(t, label, prefix, s.keys, &(*arr)[i]);
+        continue;
+      }
+      // A system entry: `name` plus the parameters the registered system declares.
+      auto* name_node = t.get("name");
+      if (!name_node || !name_node->is_string()) val.fail(&(*arr)[i], prefix + "name", label + " needs name = \"<registered system>\"");
+      std::string sys = *name_node->value<std::string>();
+      if (!system_registered(sys)) {
+        std::string hint = closest_name(sys, system_registry_names());
+        val.fail(name_node, prefix + "name", "no system registered as '" + sys + "'" + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
+      }
+      auto keys = system_registry_entry(sys).params;
+      keys.insert(keys.begin(), s.keys.begin(), s.keys.end());
+      val.check_table(t, label + " (" + sys + ")", prefix, keys, &(*arr)[i]);
+    }
+  }
+
+  Scene sc;
+  sc.path = path;
+  const int D = val.dimension;
+  sc.dimension = D;
+  auto get = [&](const char* sec, const char* key) -> toml::node& { return *root[sec][key].node(); };
+  sc.name = root["scene"]["name"].value_or(std::filesystem::path(path).stem().string());
+  sc.description = get("scene", "description").value_or(std::string());
+  sc.domain_min = vec_of(get("domain", "min"));
+  sc.domain_max = vec_of(get("domain", "max"));
+  sc.periodic.assign(D, false);
+  if (auto* p = root["domain"]["periodic"].as_array())
+    for (int a = 0; a < D; ++a) sc.periodic[a] = *(*p)[a].value<bool>();
+  sc.spacing = *get("particles", "spacing").value<double>();
+  sc.smoothing_ratio = *get("particles", "smoothing_ratio").value<double>();
+  sc.kernel = *get("particles", "kernel").value<std::string>();
+  sc.reorder_interval = static_cast<int>(*get("particles", "reorder_interval").value<long long>());
+  sc.density = *get("material", "density").value<double>();
+  sc.viscosity = *get("material", "viscosity").value<double>();
+  sc.sound_speed = *get("material", "sound_speed").value<double>();
+  sc.sound_speed_factor = *get("material", "sound_speed_factor").value<double>();
+  sc.gamma = *get("material", "gamma").value<double>();
+  sc.gravity.assign(D, 0.0);
+  sc.gravity[D - 1] = -9.81;
+  if (root["physics"]["gravity"]) sc.gravity = vec_of(get("physics", "gravity"));
+  sc.method = *get("method", "name").value<std::string>();
+  sc.delta = *get("method", "delta").value<double>();
+  sc.alpha = *get("method", "artificial_viscosity").value<double>();
+  sc.beta = *get("method", "artificial_viscosity_quadratic").value<double>();
+  sc.wall_slip = *get("method", "wall_slip").value<bool>();
+  sc.hydrostatic_init = *get("method", "hydrostatic_init").value<bool>();
+  sc.end_time = *get("time", "end").value<double>();
+  sc.cfl = *get("time", "cfl").value<double>();
+  sc.fixed_dt = *get("time", "dt").value<double>();
+  sc.max_steps = *get("time", "max_steps").value<long long>();
+  sc.dt_min = *get("time", "dt_min").value<double>();
+  sc.output_interval = root["output"]["interval"].value_or(sc.end_time / 20.0);
+  if (sc.output_interval <= 0) sc.output_interval = sc.end_time / 20.0;
+  sc.probe_interval = root["output"]["probe_interval"].value_or(sc.output_interval / 10.0);
+  if (sc.probe_interval <= 0) sc.probe_interval = sc.output_interval / 10.0;
+  for (auto& e : *root["output"]["fields"].as_array()) sc.output_fields.push_back(*e.value<std::string>());
+
+  auto where = [&](const char* sec, std::size_t i, const char* key) -> const toml::node* {
+    return root[sec][i][key].node();
+  };
+  auto path_of = [](const char* sec, std::size_t i, const char* key) {
+    return std::string(sec) + "." + std::to_string(i) + "." + key;
+  };
+  // Consistency checks that need more than one key.
+  for (int a = 0; a < D; ++a)
+    if (!(sc.domain_max[a] > sc.domain_min[a]))
+      val.fail(get("domain", "max").as_array()->get(a), "domain.max",
+               "domain.max must exceed domain.min on every axis (axis " + std::to_string(a) + ")");
+  auto inside = [&](const std::vector<double>& lo, const std::vector<double>& hi) {
+    for (int a = 0; a < D; ++a)
+      if (lo[a] < sc.domain_min[a] - 1e-12 || hi[a] > sc.domain_max[a] + 1e-12) return false;
+    return true;
+  };
+  if (auto* arr = root["fluid"].as_array()) {
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      FluidBlock b{vec_of(*where("fluid", i, "min")), vec_of(*where("fluid", i, "max"))};
+      for (int a = 0; a < D; ++a)
+        if (std::lround((b.max[a] - b.min[a]) / sc.spacing) < 1)
+          val.fail(where("fluid", i, "max"), path_of("fluid", i, "max"),
+                   "[[fluid]] #" + std::to_string(i) + " is empty: thinner than one particle spacing on axis " + std::to_string(a));
+      for (int a = 0; a < D; ++a) {
+        double n = std::lround((b.max[a] - b.min[a]) / sc.spacing), filled = n * sc.spacing;
+        if (std::abs(filled - (b.max[a] - b.min[a])) > 1e-6 * sc.spacing)
+          spdlog::warn("{}: [[fluid]] #{} is {} m wide on axis {}, not a multiple of the spacing {} m: filled with {} particles ({} m)",
+                       path, i, b.max[a] - b.min[a], a, sc.spacing, n, filled);
+      }
+      if (!inside(b.min, b.max))
+        val.fail(where("fluid", i, "min"), path_of("fluid", i, "min"),
+                 "[[fluid]] #" + std::to_string(i) + " lies (partly) outside the domain");
+      sc.fluid.push_back(std::move(b));
+    }
+  }
+  if (sc.fluid.empty()) val.fail(root["fluid"].node(), "fluid", "the scene has no [[fluid]] block");
+  if (auto* arr = root["wall"].as_array()) {
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      WallBox w{vec_of(*where("wall", i, "min")), vec_of(*where("wall", i, "max")),
+                static_cast<int>(*root["wall"][i]["layers"].value<long long>()),
+                *root["wall"][i]["open_top"].value<bool>()};
+      for (int a = 0; a < D; ++a)
+        if (!(w.max[a] > w.min[a]))
+          val.fail(where("wall", i, "max"), path_of("wall", i, "max"), "[[wall]] #" + std::to_string(i) + " is empty (max <= min)");
+      double thick = w.layers * sc.spacing;
+      std::vector<double> lo = w.min, hi = w.max;
+      for (int a = 0; a < D; ++a) {
+        lo[a] -= thick;
+        if (a < D - 1 || !w.open_top) hi[a] += thick;
+      }
+      if (!inside(lo, hi))
+        val.fail(where("wall", i, "min"), path_of("wall", i, "min"),
+                 "[[wall]] #" + std::to_string(i) + " with its " + std::to_string(w.layers) + " layers lies outside the domain");
+      if (thick + 1e-12 < sc.support_radius()) {
+        std::ostringstream m;
+        m << "[[wall]] #" << i << ": " << w.layers << " layers (" << thick << " m) do not cover the support radius "
+          << sc.support_radius() << " m; use layers >= " << std::ceil(sc.support_radius() / sc.spacing - 1e-9);
+        val.fail(root["wall"][i]["layers"].node() ? root["wall"][i]["layers"].node() : &(*arr)[i], path_of("wall", i, "layers"), m.str());
+      }
+      sc.walls.push_back(std::move(w));
+    }
+  }
+  if (auto* arr = root["probe"].as_array()) {
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      ProbeSpec p{*root["probe"][i]["name"].value<std::string>(), *root["probe"][i]["type"].value<std::string>(), {}};
+      if (auto* pos = where("probe", i, "position")) p.position = vec_of(*pos);
+      if (p.type != "surge_front" && p.position.empty())
+        val.fail(&(*arr)[i], path_of("probe", i, "position"), "[[probe]] '" + p.name + "' of type " + p.type + " needs a position");
+      if (!p.position.empty() && !inside(p.position, p.position))
+        val.fail(where("probe", i, "position"), path_of("probe", i, "position"), "[[probe]] '" + p.name + "' lies outside the domain");
+      for (auto& q : sc.probes)
+        if (q.name == p.name) val.fail(where("probe", i, "name"), path_of("probe", i, "name"), "two probes are named '" + p.name + "'");
+      sc.probes.push_back(std::move(p));
+    }
+  }
+  if (auto* arr = root["systems"].as_array())
+    for (auto& e : *arr) {
+      SystemSpec s{*(*e.as_table())["name"].value<std::string>(), *e.as_table()};
+      s.params.erase("name");
+      sc.systems.push_back(std::move(s));
+    }
+  for (int a = 0; a < D; ++a)
+    if (sc.periodic[a] && (sc.domain_max[a] - sc.domain_min[a]) < 3 * sc.support_radius())
+      val.fail(get("domain", "periodic").as_array()->get(a), "domain.periodic",
+               "periodic axis " + std::to_string(a) + " is shorter than three support radii (" +
+                   std::to_string(3 * sc.support_radius()) + " m)");
+  if (sc.fixed_dt > sc.end_time) val.fail(root["time"]["dt"].node(), "time.dt", "time.dt is larger than time.end");
+  return sc;
+}
+
+}  // namespace ryushi

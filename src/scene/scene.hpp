@@ -1,0 +1,68 @@
+#pragma once
+// A validated scene: plain values with every default resolved. Produced only by load_scene,
+// which reports any problem as SceneError("file:line:column: message").
+#include <toml++/toml.h>
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ryushi {
+
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct FluidBlock {
+  std::vector<double> min, max;
+};
+struct WallBox {
+  std::vector<double> min, max;
+  int layers = 3;
+  bool open_top = true;
+};
+struct ProbeSpec {
+  std::string name, type;
+  std::vector<double> position;
+};
+struct SystemSpec {
+  std::string name;
+  toml::table params;
+};
+
+struct Scene {
+  std::string path, name, description;
+  int dimension = 2;
+  std::vector<double> domain_min, domain_max;
+  std::vector<bool> periodic;
+  double spacing = 0, smoothing_ratio = 1.5;
+  std::string kernel = "wendland_c2";
+  int reorder_interval = 25;
+  double density = 1000, viscosity = 0, sound_speed = 0, sound_speed_factor = 10, gamma = 7;
+  std::vector<double> gravity;
+  std::string method = "wcsph";
+  double delta = 0.1, alpha = 0.02, beta = 0;
+  bool wall_slip = false, hydrostatic_init = true;
+  double end_time = 0, cfl = 0.2, fixed_dt = 0, dt_min = 1e-9;
+  long long max_steps = 0;
+  double output_interval = 0, probe_interval = 0;
+  std::vector<std::string> output_fields;
+  std::vector<FluidBlock> fluid;
+  std::vector<WallBox> walls;
+  std::vector<ProbeSpec> probes;
+  std::vector<SystemSpec> systems;
+
+  double smoothing_length() const { return smoothing_ratio * spacing; }
+  double support_radius() const { return 2.0 * smoothing_length(); }
+  // Height of the tallest fluid block along the last axis (for c0 and hydrostatics).
+  double fluid_height() const;
+  double gravity_magnitude() const;
+  double resolved_sound_speed() const;
+};
+
+// Loads, applies `key=value` overrides (section.key or section.N.key) and validates.
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+}  // namespace ryushi

@@ -1,0 +1,207 @@
+#include "scene/schema.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "methods/system_registry.hpp"
+
+namespace ryushi {
+
+namespace {
+
+KeySpec positive(std::string key, std::string unit, std::string def, std::string doc, bool required = false) {
+  KeySpec k{std::move(key), KeyType::Float, std::move(unit), std::move(def), std::move(doc), required};
+  k.min = 0.0;
+  k.min_exclusive = true;
+  return k;
+}
+KeySpec non_negative(std::string key, std::string unit, std::string def, std::string doc) {
+  KeySpec k{std::move(key), KeyType::Float, std::move(unit), std::move(def), std::move(doc)};
+  k.min = 0.0;
+  return k;
+}
+KeySpec ranged(KeySpec k, std::optional<double> lo, std::optional<double> hi) {
+  k.min = lo;
+  k.max = hi;
+  return k;
+}
+KeySpec choice(std::string key, std::string def, std::string doc, std::vector<std::string> choices,
+               bool required = false) {
+  KeySpec k{std::move(key), KeyType::String, "", std::move(def), std::move(doc), required};
+  k.choices = std::move(choices);
+  return k;
+}
+
+std::vector<SectionSpec> build() {
+  using K = KeyType;
+  std::vector<SectionSpec> s;
+  s.push_back({"scene", false, true, "What the scene is.",
+               {ranged({"dimension", K::Integer, "", "", "Spatial dimension: 2 or 3.", true}, 2, 3),
+                {"name", K::String, "", "(file name without .toml)", "Name used in logs and summary.json."},
+                {"description", K::String, "", "\"\"", "Free text."}}});
+  s.push_back({"domain", false, true,
+               "The box that must contain every particle for the whole run (walls included). A "
+               "particle leaving it is a numerical failure (exit code 3).",
+               {{"min", K::Vector, "m", "", "Lower corner, one value per axis.", true},
+                {"max", K::Vector, "m", "", "Upper corner, one value per axis.", true},
+                {"periodic", K::BoolVector, "", "(false on every axis)",
+                 "Per axis: wrap particles and neighbour search across the box. A periodic axis "
+                 "must be at least three support radii long."}}});
+  s.push_back({"particles", false, true, "Particle lattice and kernel.",
+               {positive("spacing", "m", "", "Initial particle spacing d (lattice step).", true),
+                ranged({"smoothing_ratio", K::Float, "", "1.5", "Smoothing length h = smoothing_ratio * spacing; support radius 2h. 1.5 with Wendland C2 keeps the lattice first moment within 0.3% of the identity (1.3 gives 2.6%, which shows up as a 2.6% pressure error at rest)."}, 0.5, 4.0),
+                choice("kernel", "\"wendland_c2\"", "Smoothing kernel.", {"wendland_c2", "cubic_spline"}),
+                ranged({"reorder_interval", K::Integer, "steps", "25",
+                        "Reorder particles by cell every this many steps for cache locality (0: never). Ids are stable."}, 0, std::nullopt)}});
+  s.push_back({"material", false, false, "Fluid properties.",
+               {positive("density", "kg/m^3", "1000.0", "Reference density rho0."),
+                non_negative("viscosity", "Pa s", "0.0",
+                             "Dynamic viscosity mu. 0 leaves the laminar viscosity system (and its "
+                             "per-particle `viscosity` column) out of the pipeline."),
+                non_negative("sound_speed", "m/s", "0.0", "Artificial sound speed c0. 0: c0 = sound_speed_factor * sqrt(2 g H), H the height of the tallest fluid block."),
+                positive("sound_speed_factor", "", "10.0", "Used when sound_speed = 0; 10 keeps density variations near 1%."),
+                positive("gamma", "", "7.0", "Tait exponent.")}});
+  s.push_back({"physics", false, false, "Body forces.",
+               {{"gravity", K::Vector, "m/s^2", "(0, -9.81) in 2D; (0, 0, -9.81) in 3D",
+                 "Gravitational acceleration. The last axis is 'up' for probes and hydrostatic initialisation."}}});
+  s.push_back({"method", false, false, "The particle method and its parameters.",
+               {choice("name", "\"wcsph\"", "Method: weakly compressible SPH.", {"wcsph"}),
+                non_negative("delta", "", "0.1", "delta-SPH density diffusion coefficient (seed 002 eq. 18); 0 turns it off."),
+                non_negative("artificial_viscosity", "", "0.02", "Monaghan artificial viscosity alpha (linear term, seed 002 eq. 23 'A')."),
+                non_negative("artificial_viscosity_quadratic", "", "0.0", "Quadratic term beta ('B')."),
+                {"wall_slip", K::Bool, "", "false", "With laminar viscosity: free-slip walls (true) or no-slip (false)."},
+                {"hydrostatic_init", K::Bool, "", "true",
+                 "Start fluid with hydrostatic pressure and the matching density (mass = density * d^dim), so a resting column starts in equilibrium."}}});
+  s.push_back({"time", false, true, "Time control.",
+               {positive("end", "s", "", "Simulated end time.", true),
+                ranged({"cfl", K::Float, "", "0.2", "CFL number for the adaptive step dt = cfl h / (c0 + |v|max), also bounded by force and viscous limits."}, 1e-6, 1.0),
+                non_negative("dt", "s", "0.0", "Fixed time step; 0 = adaptive."),
+                ranged({"max_steps", K::Integer, "", "0", "Stop after this many steps (0: no limit)."}, 0, std::nullopt),
+                non_negative("dt_min", "s", "1e-9", "An adaptive step below this is a numerical failure (dt collapse).")}});
+  s.push_back({"output", false, false, "What is written to the output directory.",
+               {non_negative("interval", "s", "(end / 20)", "Simulated time between frames (frame 0 is the initial state)."),
+                {"fields", K::StringList, "", "[]",
+                 "Extra per-particle fields to write besides position, velocity, pressure, density, kind, id (e.g. \"acceleration\", \"density_rate\", \"mass\")."},
+                non_negative("probe_interval", "s", "(interval / 10)", "Simulated time between probe samples in probes.csv.")}});
+  s.push_back({"fluid", true, true, "A block of fluid on the lattice: particles at min + (k + 1/2) d.",
+               {{"min", K::Vector, "m", "", "Lower corner.", true},
+                {"max", K::Vector, "m", "", "Upper corner.", true}}});
+  s.push_back({"wall", true, false, "A rigid container: `layers` of wall particles outside the box [min, max].",
+               {{"min", K::Vector, "m", "", "Inner lower corner.", true},
+                {"max", K::Vector, "m", "", "Inner upper corner.", true},
+                ranged({"layers", K::Integer, "", "3", "Wall thickness in particle layers; layers * spacing must cover the support radius 2h."}, 1, 16),
+                {"open_top", K::Bool, "", "true", "Leave the upper side (last axis) open."}}});
+  s.push_back({"probe", true, false, "Measurements written to probes.csv (one column each).",
+               {{"name", K::String, "", "", "Column name.", true},
+                choice("type", "", "pressure: kernel-interpolated (Shepard) fluid pressure at `position`; surge_front: max x of fluid particles + d/2; water_height: max height of fluid particles within d of `position` horizontally (+ d/2).",
+                       {"pressure", "surge_front", "water_height"}, true),
+                {"position", K::Vector, "m", "", "Where to measure (pressure, water_height; the vertical component is ignored for water_height)."}}});
+  s.push_back({"systems", true, false,
+               "Registered systems added to the method's pipeline; the scheduler places them by their declared access. Keys besides `name` are the system's parameters (see below).",
+               {{"name", K::String, "", "", "Registered system name.", true}}});
+  return s;
+}
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j)
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] != b[j - 1])});
+    prev.swap(cur);
+  }
+  return prev[b.size()];
+}
+
+}  // namespace
+
+const std::vector<SectionSpec>& scene_schema() {
+  static const std::vector<SectionSpec> schema = build();
+  return schema;
+}
+
+const SectionSpec* find_section(const std::string& name) {
+  for (auto& s : scene_schema())
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+const KeySpec* find_key(const std::vector<KeySpec>& keys, const std::string& key) {
+  for (auto& k : keys)
+    if (k.key == key) return &k;
+  return nullptr;
+}
+
+std::string type_name(KeyType t) {
+  switch (t) {
+    case KeyType::Integer: return "integer";
+    case KeyType::Float: return "number";
+    case KeyType::Bool: return "boolean";
+    case KeyType::String: return "string";
+    case KeyType::Vector: return "array of numbers (one per axis)";
+    case KeyType::BoolVector: return "array of booleans (one per axis)";
+    case KeyType::StringList: return "array of strings";
+  }
+  return "?";
+}
+
+std::string closest_name(const std::string& word, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_d = word.size() / 2 + 2;  // beyond this a suggestion is noise
+  for (auto& c : candidates) {
+    std::size_t d = edit_distance(word, c);
+    if (d < best_d) {
+      best_d = d;
+      best = c;
+    }
+  }
+  return best;
+}
+
+namespace {
+void key_table(std::ostringstream& out, const std::vector<KeySpec>& keys) {
+  out << "| key | type | unit | default | meaning |\n|---|---|---|---|---|\n";
+  for (auto& k : keys) {
+    std::string range;
+    if (k.min) range += std::string(k.min_exclusive ? " > " : " >= ") + std::to_string(*k.min).substr(0, 6);
+    if (k.max) range += " <= " + std::to_string(*k.max).substr(0, 6);
+    if (!k.choices.empty()) {
+      range = " one of:";
+      for (auto& c : k.choices) range += " `" + c + "`";
+    }
+    out << "| `" << k.key << "` | " << type_name(k.type) << " | " << k.unit << " | "
+        << (k.required ? "**required**" : (k.default_value.empty() ? "(none)" : "`" + k.default_value + "`"))
+        << " | " << k.doc << (range.empty() ? "" : " Allowed:" + range + ".") << " |\n";
+  }
+}
+}  // namespace
+
+std::string schema_markdown() {
+  std::ostringstream out;
+  out << "# Scene file reference\n\n"
+         "Generated by `build/ryushi keys --markdown` from the same table the loader validates "
+         "against (a test keeps this file in step). Scenes are TOML. Units are SI. Unknown keys, "
+         "wrong types and out-of-range values are reported as `file:line:column: message` with "
+         "exit code 2 before anything is written.\n\n"
+         "Any scalar key can be overridden on the command line: `--set section.key=value`, or "
+         "`--set section.N.key=value` for the N-th (from 0) entry of an array of tables such as "
+         "`[[probe]]`. Values are TOML literals; a bare word is taken as a string.\n\n";
+  for (auto& s : scene_schema()) {
+    out << "## " << (s.array_of_tables ? "[[" + s.name + "]]" : "[" + s.name + "]")
+        << (s.required ? " (required)" : "") << "\n\n"
+        << s.doc << "\n\n";
+    key_table(out, s.keys);
+    out << "\n";
+  }
+  out << "## Registered systems (`[[systems]]`)\n\n";
+  for (auto& name : system_registry_names()) {
+    auto& entry = system_registry_entry(name);
+    out << "### `" << name << "`\n\n" << entry.doc << "\n\n";
+    key_table(out, entry.params);
+    out << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace ryushi

@@ -1,0 +1,45 @@
+#pragma once
+// The scene-file schema: every section and key with its type, unit, default, range and doc.
+// One table drives validation, defaults and docs/scenes.md (`ryushi keys --markdown`), so the
+// documentation cannot drift from what the loader accepts.
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ryushi {
+
+enum class KeyType { Integer, Float, Bool, String, Vector, BoolVector, StringList };
+
+struct KeySpec {
+  std::string key;
+  KeyType type;
+  std::string unit;
+  // TOML literal inserted when the key is absent ("" = no default). A text in parentheses is
+  // descriptive only: the loader computes that default.
+  std::string default_value;
+  std::string doc;
+  bool required = false;
+  std::optional<double> min{};
+  std::optional<double> max{};
+  bool min_exclusive = false;
+  std::vector<std::string> choices{};
+};
+
+struct SectionSpec {
+  std::string name;
+  bool array_of_tables;
+  bool required;
+  std::string doc;
+  std::vector<KeySpec> keys;
+};
+
+const std::vector<SectionSpec>& scene_schema();
+const SectionSpec* find_section(const std::string& name);
+const KeySpec* find_key(const std::vector<KeySpec>& keys, const std::string& key);
+std::string type_name(KeyType t);
+// Closest candidate by edit distance, or "" if none is reasonably close.
+std::string closest_name(const std::string& word, const std::vector<std::string>& candidates);
+// Markdown reference of every section and key (docs/scenes.md), including registered systems.
+std::string schema_markdown();
+
+}  // namespace ryushi

@@ -1,0 +1,59 @@
+#pragma once
+// Generalised wall boundary condition (Adami, Hu & Adams 2012; seed 002 eqs. 27-28):
+// each wall particle takes the Shepard-weighted pressure of the fluid around it plus the
+// hydrostatic correction g . sum(rho_f (x_w - x_f) W), its density from the inverse equation of
+// state, and (when laminar viscosity is on) a ghost velocity 2 v_wall - v~ for no-slip.
+// Static walls: v_wall = 0.
+#include "ecs/system.hpp"
+#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/fluid/wcsph_parameters.hpp"
+#include "systems/neighbour/neighbour_list.hpp"
+
+namespace ryushi {
+
+template <int D>
+class AdamiWall final : public System<D> {
+ public:
+  explicit AdamiWall(const WcsphParameters<D>& p) : p_(p) {}
+  std::string name() const override { return "wall_boundary_adami"; }
+  Access access() const override {
+    Access a;
+    a.read(components::position, components::velocity, components::kind, neighbours_resource)
+        .write(components::pressure, components::density);
+    if (p_.mu > 0) a.write(components::wall_velocity);
+    return a;
+  }
+  void run(SystemContext<D>& ctx) override {
+    auto x = ctx.read(components::position);
+    auto v = ctx.read(components::velocity);
+    auto kind = ctx.read(components::kind);
+    auto& nl = ctx.read(neighbours_resource);
+    auto p = ctx.write(components::pressure);
+    auto rho = ctx.write(components::density);
+    std::span<Vec<D>> ghost;
+    if (p_.mu > 0) ghost = ctx.write(components::wall_velocity);
+    const bool periodic = p_.domain.any_periodic();
+    for_each_of_kind(kind, kWall, [&](std::size_t w) {
+      double sum_w = 0, sum_p = 0;
+      Vec<D> sum_rho_r = Vec<D>::Zero(), sum_v = Vec<D>::Zero();
+      for (auto f : nl.of(w)) {
+        if (kind[f] != kFluid) continue;
+        Vec<D> r = periodic ? p_.domain.displacement(x[w], x[f]) : Vec<D>(x[w] - x[f]);
+        double W = p_.kernel.w(r.norm());
+        sum_w += W;
+        sum_p += p[f] * W;
+        sum_rho_r += rho[f] * r * W;
+        sum_v += v[f] * W;
+      }
+      double pw = sum_w > 0 ? (sum_p + p_.gravity.dot(sum_rho_r)) / sum_w : 0.0;
+      p[w] = pw;
+      rho[w] = p_.density(pw);
+      if (!ghost.empty()) ghost[w] = sum_w > 0 ? Vec<D>(-sum_v / sum_w) : Vec<D>::Zero();
+    });
+  }
+
+ private:
+  WcsphParameters<D> p_;
+};
+
+}  // namespace ryushi

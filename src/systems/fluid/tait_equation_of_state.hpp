@@ -1,0 +1,27 @@
+#pragma once
+// Tait equation of state p = B((rho/rho0)^gamma - 1) for fluid particles (seed 002 eq. 3).
+#include "ecs/system.hpp"
+#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/fluid/wcsph_parameters.hpp"
+
+namespace ryushi {
+
+template <int D>
+class TaitEquationOfState final : public System<D> {
+ public:
+  explicit TaitEquationOfState(const WcsphParameters<D>& p) : p_(p) {}
+  std::string name() const override { return "equation_of_state"; }
+  Access access() const override {
+    return Access{}.read(components::density, components::kind).write(components::pressure);
+  }
+  void run(SystemContext<D>& ctx) override {
+    auto rho = ctx.read(components::density);
+    auto p = ctx.write(components::pressure);
+    for_each_of_kind(ctx.read(components::kind), kFluid, [&](std::size_t i) { p[i] = p_.pressure(rho[i]); });
+  }
+
+ private:
+  WcsphParameters<D> p_;
+};
+
+}  // namespace ryushi

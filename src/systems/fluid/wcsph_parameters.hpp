@@ -1,0 +1,37 @@
+#pragma once
+// Physical and numerical constants of a weakly compressible SPH run, fixed at scene load.
+#include "ecs/math.hpp"
+#include "systems/kernels/kernel.hpp"
+#include "systems/neighbour/domain.hpp"
+
+namespace ryushi {
+
+template <int D>
+struct WcsphParameters {
+  Kernel<D> kernel{KernelType::WendlandC2, 1.0};
+  Domain<D> domain;
+  Vec<D> gravity = Vec<D>::Zero();
+  double spacing = 1;
+  double rho0 = 1000;
+  double c0 = 10;
+  double gamma = 7;
+  double delta = 0.1;  // delta-SPH diffusion coefficient (seed 002 eq. 18)
+  double alpha = 0.02; // artificial viscosity, linear term (seed 002 eq. 23, "A")
+  double beta = 0.0;   // artificial viscosity, quadratic term ("B")
+  double mu = 0;       // dynamic viscosity, Pa s (0: no laminar viscosity system)
+  bool wall_no_slip = true;
+
+  // Tait stiffness B = rho0 c0^2 / gamma (seed 002 eq. 3 with p0 = B).
+  double stiffness() const { return rho0 * c0 * c0 / gamma; }
+  double pressure(double rho) const {
+    double x = rho / rho0;
+    double xg = gamma == 7.0 ? x * x * x * x * x * x * x : std::pow(x, gamma);
+    return stiffness() * (xg - 1.0);
+  }
+  double density(double p) const {
+    double base = p / stiffness() + 1.0;
+    return rho0 * std::pow(base > 0 ? base : 0.0, 1.0 / gamma);
+  }
+};
+
+}  // namespace ryushi

@@ -1,0 +1,89 @@
+#include "systems/io/hdf5_frame.hpp"
+
+#include <hdf5.h>
+
+#include <stdexcept>
+
+namespace ryushi {
+
+std::vector<std::string> default_frame_fields() {
+  return {"position", "velocity", "pressure", "density", "kind", "id"};
+}
+
+namespace {
+
+struct H5Handle {
+  hid_t id;
+  herr_t (*close)(hid_t);
+  ~H5Handle() {
+    if (id >= 0) close(id);
+  }
+};
+
+void check(herr_t status, const std::string& what) {
+  if (status < 0) throw std::runtime_error("HDF5: " + what + " failed");
+}
+
+template <class T>
+void write_dataset(hid_t file, const std::string& name, hid_t type, const T* data, std::vector<hsize_t> dims) {
+  H5Handle space{H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose};
+  H5Handle set{H5Dcreate2(file, name.c_str(), type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose};
+  if (set.id < 0) throw std::runtime_error("HDF5: cannot create dataset " + name);
+  check(H5Dwrite(set.id, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "writing " + name);
+}
+
+template <class T>
+void write_attribute(hid_t file, const char* name, hid_t type, T value) {
+  H5Handle space{H5Screate(H5S_SCALAR), H5Sclose};
+  H5Handle attr{H5Acreate2(file, name, type, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
+  check(H5Awrite(attr.id, type, &value), std::string("writing attribute ") + name);
+}
+
+}  // namespace
+
+template <int D>
+std::vector<FieldInfo> write_frame(const std::filesystem::path& path, const World<D>& world,
+                                   const std::vector<std::string>& extra, double time, long long step) {
+  auto tmp = path;
+  tmp += ".tmp";
+  std::vector<FieldInfo> written;
+  {
+    H5Handle file{H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
+    if (file.id < 0) throw std::runtime_error(tmp.string() + ": cannot create HDF5 file");
+    const hsize_t n = world.size();
+    auto fields = default_frame_fields();
+    for (auto& e : extra)
+      if (std::find(fields.begin(), fields.end(), e) == fields.end()) fields.push_back(e);
+    for (auto& name : fields) {
+      if (!world.has(name)) continue;  // e.g. velocity in a scene without fluid motion
+      ColumnType t = world.column_type(name);
+      switch (t) {
+        case ColumnType::Scalar:
+          write_dataset(file.id, name, H5T_NATIVE_DOUBLE, world.column(Component<Scalar>{name}).data(), {n});
+          break;
+        case ColumnType::Vector:
+          write_dataset(file.id, name, H5T_NATIVE_DOUBLE, world.column(Component<Vector>{name}).data()->data(), {n, D});
+          break;
+        case ColumnType::Tensor:
+          write_dataset(file.id, name, H5T_NATIVE_DOUBLE, world.column(Component<Tensor>{name}).data()->data(), {n, D, D});
+          break;
+        case ColumnType::Flags:
+          write_dataset(file.id, name, H5T_NATIVE_INT32, world.column(Component<Flags>{name}).data(), {n});
+          break;
+      }
+      written.push_back({name, t});
+    }
+    write_attribute(file.id, "time", H5T_NATIVE_DOUBLE, time);
+    write_attribute(file.id, "step", H5T_NATIVE_LLONG, step);
+    check(H5Fflush(file.id, H5F_SCOPE_GLOBAL), "flush");
+  }
+  std::filesystem::rename(tmp, path);
+  return written;
+}
+
+template std::vector<FieldInfo> write_frame<2>(const std::filesystem::path&, const World<2>&,
+                                               const std::vector<std::string>&, double, long long);
+template std::vector<FieldInfo> write_frame<3>(const std::filesystem::path&, const World<3>&,
+                                               const std::vector<std::string>&, double, long long);
+
+}  // namespace ryushi

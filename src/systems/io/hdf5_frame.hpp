@@ -1,0 +1,24 @@
+#pragma once
+// One output frame as an HDF5 file: a dataset per field (N, or N x D for vectors, N x D x D for
+// tensors), plus a `time` attribute on the root group. Written to NAME.tmp and renamed.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "ecs/world.hpp"
+
+namespace ryushi {
+
+struct FieldInfo {
+  std::string name;
+  ColumnType type;
+};
+
+// Fields always written, in this order, then the requested extras.
+std::vector<std::string> default_frame_fields();
+
+template <int D>
+std::vector<FieldInfo> write_frame(const std::filesystem::path& path, const World<D>& world,
+                                   const std::vector<std::string>& fields, double time, long long step);
+
+}  // namespace ryushi

@@ -1,0 +1,28 @@
+#pragma once
+// CSR neighbour list: offsets (N+1) and indices. The interface (count, neighbours of i) is
+// separate from how the list is built, so operators only see "the neighbours of i".
+// A particle is not its own neighbour; pairs are included when |x_i - x_j| <= radius.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "ecs/resources.hpp"
+
+namespace ryushi {
+
+struct NeighbourList {
+  std::vector<std::uint32_t> offsets{0};
+  std::vector<std::uint32_t> indices;
+  double radius = 0;
+
+  std::size_t size() const { return offsets.size() - 1; }
+  std::uint32_t count(std::size_t i) const { return offsets[i + 1] - offsets[i]; }
+  std::span<const std::uint32_t> of(std::size_t i) const {
+    return {indices.data() + offsets[i], indices.data() + offsets[i + 1]};
+  }
+  std::size_t bytes() const { return (offsets.size() + indices.size()) * sizeof(std::uint32_t); }
+};
+
+inline constexpr Resource<NeighbourList> neighbours_resource{"neighbours"};
+
+}  // namespace ryushi

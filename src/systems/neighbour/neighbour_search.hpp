@@ -1,0 +1,44 @@
+#pragma once
+// Neighbour search system: cell grid + counting sort, then a CSR list of all pairs within the
+// search radius. Reads positions; writes the `neighbours` and `cell_grid` resources.
+#include <span>
+
+#include "ecs/system.hpp"
+#include "systems/neighbour/cell_grid.hpp"
+#include "systems/neighbour/domain.hpp"
+#include "systems/neighbour/neighbour_list.hpp"
+
+namespace ryushi {
+
+template <int D>
+inline constexpr Resource<CellGrid<D>> cell_grid_resource{"cell_grid"};
+
+// Builds `out` for positions x (usable without a world: tests, tools and benchmarks).
+template <int D>
+void build_neighbour_list(const Domain<D>& domain, double radius, std::span<const Vec<D>> x,
+                          CellGrid<D>& grid, NeighbourList& out);
+
+template <int D>
+class NeighbourSearch final : public System<D> {
+ public:
+  explicit NeighbourSearch(double radius) : radius_(radius) {}
+  std::string name() const override { return "neighbour_search"; }
+  Access access() const override {
+    return Access{}
+        .read(components::position, domain_resource<D>)
+        .write(neighbours_resource, cell_grid_resource<D>);
+  }
+  void initialise(World<D>&, Resources& res) override {
+    res.ensure(neighbours_resource);
+    res.ensure(cell_grid_resource<D>);
+  }
+  void run(SystemContext<D>& ctx) override {
+    build_neighbour_list<D>(ctx.read(domain_resource<D>), radius_, ctx.read(components::position),
+                            ctx.write(cell_grid_resource<D>), ctx.write(neighbours_resource));
+  }
+
+ private:
+  double radius_;
+};
+
+}  // namespace ryushi

@@ -1,0 +1,84 @@
+#pragma once
+// Helpers shared by the tests: scratch directories, scene files, CSV and JSON look-ups.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace ryushi::test {
+
+namespace fs = std::filesystem;
+
+inline fs::path source_dir() { return RYUSHI_SOURCE_DIR; }
+inline std::string scene_path(const std::string& name) { return (source_dir() / "scenes" / name).string(); }
+
+// A fresh directory under the build tree, removed at construction.
+inline fs::path scratch(const std::string& name) {
+  fs::path p = fs::current_path() / "scratch" / name;
+  fs::remove_all(p);
+  fs::create_directories(p.parent_path());
+  return p;
+}
+
+inline std::string read_text(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+inline void write_text(const fs::path& p, const std::string& text) {
+  fs::create_directories(p.parent_path());
+  std::ofstream(p) << text;
+}
+
+// Columns of a CSV with a header row.
+inline std::map<std::string, std::vector<double>> read_csv(const fs::path& p) {
+  std::ifstream in(p);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  std::stringstream hs(line);
+  for (std::string n; std::getline(hs, n, ',');) names.push_back(n);
+  std::map<std::string, std::vector<double>> cols;
+  while (std::getline(in, line)) {
+    std::stringstream ls(line);
+    std::size_t k = 0;
+    for (std::string v; std::getline(ls, v, ',') && k < names.size(); ++k) cols[names[k]].push_back(std::strtod(v.c_str(), nullptr));
+  }
+  return cols;
+}
+
+// The first "key": value in a JSON text (flat look-up is enough for summary.json).
+inline std::string json_raw(const std::string& json, const std::string& key) {
+  std::regex re("\"" + key + "\": (\"[^\"]*\"|[^,\\n}]+)");
+  std::smatch m;
+  if (!std::regex_search(json, m, re)) return "";
+  std::string v = m[1];
+  if (!v.empty() && v.front() == '"') v = v.substr(1, v.size() - 2);
+  return v;
+}
+inline double json_number(const std::string& json, const std::string& key) {
+  return std::strtod(json_raw(json, key).c_str(), nullptr);
+}
+
+// Runs a shell command; returns its exit status and captures stderr+stdout.
+struct CommandResult {
+  int code;
+  std::string output;
+};
+inline CommandResult run_command(const std::string& cmd) {
+  fs::path log = fs::current_path() / "scratch" / ("cmd_" + std::to_string(std::rand()) + ".log");
+  fs::create_directories(log.parent_path());
+  int status = std::system((cmd + " > " + log.string() + " 2>&1").c_str());
+  int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::string out = read_text(log);
+  fs::remove(log);
+  return {code, out};
+}
+
+}  // namespace ryushi::test
