@@ -116,3 +116,27 @@ TEST_CASE("neighbours: the cell order groups particles by cell") {
   std::sort(perm.begin(), perm.end());
   for (std::size_t k = 0; k < perm.size(); ++k) CHECK(perm[k] == k);  // a permutation
 }
+
+TEST_CASE("neighbours: skipping pairs of one kind leaves every other pair in place") {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Vec<2>> x;
+  std::vector<std::int32_t> kind;
+  for (int i = 0; i < 1200; ++i) {
+    x.push_back(Vec<2>(u(rng), u(rng)));
+    kind.push_back(x.back()[1] < 0.3 ? kWall : kFluid);
+  }
+  auto dom = unit_box<2>(1.0);
+  auto expected = brute_force<2>(dom, 0.06, x);
+  CellGrid<2> grid;
+  NeighbourList list;
+  build_neighbour_list<2>(dom, 0.06, x, grid, list, kind, kWall);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    std::set<std::uint32_t> want;
+    for (auto j : expected[i])
+      if (!(kind[i] == kWall && kind[j] == kWall)) want.insert(j);
+    auto got = list.of(i);
+    CHECK(std::set<std::uint32_t>(got.begin(), got.end()) == want);
+    CHECK(std::is_sorted(got.begin(), got.end()));
+  }
+}

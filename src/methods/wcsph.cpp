@@ -123,7 +123,7 @@ void populate_world(const Scene& s, const WcsphParameters<D>& p, World<D>& world
 
 template <int D>
 std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D>& p) {
-  auto neighbours = std::make_shared<NeighbourSearch<D>>(p.kernel.support());
+  auto neighbours = std::make_shared<NeighbourSearch<D>>(p.kernel.support(), /*skip_wall_pairs=*/true);
   auto wall = std::make_shared<AdamiWall<D>>(p);
   auto gradient = std::make_shared<RenormalisedDensityGradient<D>>(p);
   auto continuity = std::make_shared<ContinuityDeltaSph<D>>(p);

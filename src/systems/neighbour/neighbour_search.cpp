@@ -6,75 +6,108 @@
 
 namespace ryushi {
 
+namespace {
+
+template <int D>
+constexpr std::size_t kStencil = D == 2 ? 9 : 27;
+
+template <int D>
+std::array<std::array<std::int64_t, D>, kStencil<D>> stencil() {
+  std::array<std::array<std::int64_t, D>, kStencil<D>> s{};
+  for (std::size_t k = 0; k < kStencil<D>; ++k) {
+    std::size_t rest = k;
+    for (int a = 0; a < D; ++a) {
+      s[k][a] = static_cast<std::int64_t>(rest % 3) - 1;
+      rest /= 3;
+    }
+  }
+  return s;
+}
+
+}  // namespace
+
 template <int D>
 void build_neighbour_list(const Domain<D>& domain, double radius, std::span<const Vec<D>> x,
-                          CellGrid<D>& grid, NeighbourList& out) {
+                          CellGrid<D>& grid, NeighbourList& out, std::span<const std::int32_t> kind,
+                          std::int32_t skip_kind) {
   grid.build(domain, radius, x);
   const std::size_t N = x.size();
   const double r2 = radius * radius;
   const bool periodic = domain.any_periodic();
+  const bool skipping = !kind.empty();
+  const auto offsets = stencil<D>();
+  const auto sorted = grid.sorted();
 
-  // Blocks of particles gather their neighbours into private buffers (no atomics), then the
-  // buffers are concatenated into the CSR arrays. One distance pass, one copy.
-  constexpr std::size_t kBlock = 2048;
-  const std::size_t nblocks = (N + kBlock - 1) / kBlock;
-  std::vector<std::vector<std::uint32_t>> buffers(nblocks);
-  out.offsets.assign(N + 1, 0);
+  // Work goes cell by cell: the candidates of the 3^D surrounding cells are gathered once into
+  // contiguous arrays and every particle of the cell is tested against them. Each chunk of cells
+  // writes into its own buffer (no atomics); a second pass scatters the lists into CSR order.
+  const std::size_t ncell = grid.cell_count();
+  constexpr std::size_t kCellsPerChunk = 64;
+  const std::size_t nchunks = (ncell + kCellsPerChunk - 1) / kCellsPerChunk;
+  std::vector<std::vector<std::uint32_t>> buffers(nchunks);
+  std::vector<std::uint32_t> count(N), start(N);
 
-  std::array<std::array<std::int64_t, D>, (D == 2 ? 9 : 27)> stencil;
-  {
-    std::size_t k = 0;
-    std::array<std::int64_t, D> o;
-    auto fill = [&](auto&& self, int a) -> void {
-      if (a == D) {
-        stencil[k++] = o;
-        return;
-      }
-      for (std::int64_t d = -1; d <= 1; ++d) {
-        o[a] = d;
-        self(self, a + 1);
-      }
-    };
-    fill(fill, 0);
-  }
-
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nblocks, 1), [&](auto range) {
-    for (std::size_t b = range.begin(); b != range.end(); ++b) {
-      auto& buf = buffers[b];
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nchunks, 1), [&](auto range) {
+    std::vector<std::uint32_t> cand;
+    std::vector<Vec<D>> cand_x;
+    std::vector<char> cand_skip;
+    for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk) {
+      auto& buf = buffers[chunk];
       buf.clear();
-      std::size_t end = std::min(N, (b + 1) * kBlock);
-      for (std::size_t i = b * kBlock; i < end; ++i) {
-        auto c = grid.coords(grid.cell_of(i));
-        std::uint32_t before = static_cast<std::uint32_t>(buf.size());
-        for (auto& o : stencil) {
-          std::array<std::int64_t, D> cc;
-          for (int a = 0; a < D; ++a) cc[a] = c[a] + o[a];
-          std::int64_t cell = grid.cell_at(cc);
+      const std::size_t c_end = std::min(ncell, (chunk + 1) * kCellsPerChunk);
+      for (std::size_t c = chunk * kCellsPerChunk; c < c_end; ++c) {
+        const std::uint32_t first = grid.cell_start(c), last = grid.cell_start(c + 1);
+        if (first == last) continue;
+        cand.clear();
+        cand_x.clear();
+        cand_skip.clear();
+        auto cc = grid.coords(static_cast<std::uint32_t>(c));
+        for (auto& o : offsets) {
+          std::array<std::int64_t, D> nc;
+          for (int a = 0; a < D; ++a) nc[a] = cc[a] + o[a];
+          std::int64_t cell = grid.cell_at(nc);
           if (cell < 0) continue;
-          auto sorted = grid.sorted();
           for (std::uint32_t k = grid.cell_start(cell); k < grid.cell_start(cell + 1); ++k) {
             std::uint32_t j = sorted[k];
-            if (j == i) continue;
-            Vec<D> d = periodic ? domain.displacement(x[i], x[j]) : Vec<D>(x[i] - x[j]);
-            if (d.squaredNorm() <= r2) buf.push_back(j);
+            cand.push_back(j);
+            cand_x.push_back(x[j]);
+            cand_skip.push_back(skipping && kind[j] == skip_kind);
           }
         }
-        out.offsets[i + 1] = static_cast<std::uint32_t>(buf.size()) - before;
+        for (std::uint32_t k = first; k < last; ++k) {
+          const std::uint32_t i = sorted[k];
+          const Vec<D> xi = x[i];
+          const bool i_skip = skipping && kind[i] == skip_kind;
+          start[i] = static_cast<std::uint32_t>(buf.size());
+          for (std::size_t q = 0; q < cand.size(); ++q) {
+            if (i_skip && cand_skip[q]) continue;
+            Vec<D> d = periodic ? domain.displacement(xi, cand_x[q]) : Vec<D>(xi - cand_x[q]);
+            if (d.squaredNorm() <= r2 && cand[q] != i) buf.push_back(cand[q]);
+          }
+          count[i] = static_cast<std::uint32_t>(buf.size()) - start[i];
+        }
       }
     }
   });
-  for (std::size_t i = 0; i < N; ++i) out.offsets[i + 1] += out.offsets[i];
+
+  out.offsets.assign(N + 1, 0);
+  for (std::size_t i = 0; i < N; ++i) out.offsets[i + 1] = out.offsets[i] + count[i];
   out.indices.resize(out.offsets[N]);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nblocks, 1), [&](auto range) {
-    for (std::size_t b = range.begin(); b != range.end(); ++b)
-      std::copy(buffers[b].begin(), buffers[b].end(), out.indices.begin() + out.offsets[b * kBlock]);
+  // Scatter: the chunk a particle belongs to follows from its cell.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, N, 4096), [&](auto r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      const auto& buf = buffers[grid.cell_of(i) / kCellsPerChunk];
+      std::copy_n(buf.begin() + start[i], count[i], out.indices.begin() + out.offsets[i]);
+      // Ascending order within a list: deterministic, and gathers walk memory forwards.
+      std::sort(out.indices.begin() + out.offsets[i], out.indices.begin() + out.offsets[i + 1]);
+    }
   });
   out.radius = radius;
 }
 
-template void build_neighbour_list<2>(const Domain<2>&, double, std::span<const Vec<2>>,
-                                      CellGrid<2>&, NeighbourList&);
-template void build_neighbour_list<3>(const Domain<3>&, double, std::span<const Vec<3>>,
-                                      CellGrid<3>&, NeighbourList&);
+template void build_neighbour_list<2>(const Domain<2>&, double, std::span<const Vec<2>>, CellGrid<2>&,
+                                      NeighbourList&, std::span<const std::int32_t>, std::int32_t);
+template void build_neighbour_list<3>(const Domain<3>&, double, std::span<const Vec<3>>, CellGrid<3>&,
+                                      NeighbourList&, std::span<const std::int32_t>, std::int32_t);
 
 }  // namespace ryushi

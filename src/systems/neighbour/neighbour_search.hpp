@@ -13,19 +13,24 @@ namespace ryushi {
 template <int D>
 inline constexpr Resource<CellGrid<D>> cell_grid_resource{"cell_grid"};
 
-// Builds `out` for positions x (usable without a world: tests, tools and benchmarks).
+// Builds `out` for positions x (usable without a world: tests, tools and benchmarks). With a
+// `kind` span, pairs in which both particles are of `skip_kind` are left out (walls need only
+// their fluid neighbours). Each list is sorted by index.
 template <int D>
 void build_neighbour_list(const Domain<D>& domain, double radius, std::span<const Vec<D>> x,
-                          CellGrid<D>& grid, NeighbourList& out);
+                          CellGrid<D>& grid, NeighbourList& out, std::span<const std::int32_t> kind = {},
+                          std::int32_t skip_kind = -1);
 
 template <int D>
 class NeighbourSearch final : public System<D> {
  public:
-  explicit NeighbourSearch(double radius) : radius_(radius) {}
+  // skip_wall_pairs: leave wall-wall pairs out of the list (no WCSPH system uses them).
+  explicit NeighbourSearch(double radius, bool skip_wall_pairs = false)
+      : radius_(radius), skip_wall_pairs_(skip_wall_pairs) {}
   std::string name() const override { return "neighbour_search"; }
   Access access() const override {
     return Access{}
-        .read(components::position, domain_resource<D>)
+        .read(components::position, components::kind, domain_resource<D>)
         .write(neighbours_resource, cell_grid_resource<D>);
   }
   void initialise(World<D>&, Resources& res) override {
@@ -33,12 +38,15 @@ class NeighbourSearch final : public System<D> {
     res.ensure(cell_grid_resource<D>);
   }
   void run(SystemContext<D>& ctx) override {
+    std::span<const std::int32_t> kind;
+    if (skip_wall_pairs_) kind = ctx.read(components::kind);
     build_neighbour_list<D>(ctx.read(domain_resource<D>), radius_, ctx.read(components::position),
-                            ctx.write(cell_grid_resource<D>), ctx.write(neighbours_resource));
+                            ctx.write(cell_grid_resource<D>), ctx.write(neighbours_resource), kind, kWall);
   }
 
  private:
   double radius_;
+  bool skip_wall_pairs_;
 };
 
 }  // namespace ryushi
