@@ -141,3 +141,52 @@ TEST_CASE("cli: exit codes and scene reference") {
   CHECK_MESSAGE(keys.output == test::read_text(test::source_dir() / "docs" / "scenes.md"),
                 "docs/scenes.md is stale: run `make docs`");
 }
+
+namespace {
+const char* kFallingBlock = R"([scene]
+dimension = 2
+[domain]
+min = [0.0, 0.0]
+max = [1.0, 1.0]
+[particles]
+spacing = 0.05
+[time]
+end = 1.0
+[output]
+interval = 0.05
+[[fluid]]
+min = [0.3, 0.2]
+max = [0.7, 0.6]
+)";
+}  // namespace
+
+TEST_CASE("failure: a particle leaving the domain names itself and the system that moved it") {
+  auto dir = test::scratch("failure_domain");
+  test::write_text(dir / "falling.toml", kFallingBlock);  // no walls: the block falls out
+  RunOptions opt;
+  opt.scene = (dir / "falling.toml").string();
+  opt.out_dir = (dir / "out").string();
+  opt.quiet = true;
+  CHECK(run_scene(opt) == kExitNumericalFailure);
+  auto message = test::json_raw(test::read_text(dir / "out" / "summary.json"), "message");
+  CHECK(message.find("left the domain") != std::string::npos);
+  CHECK(message.find("after system 'integrate_corrector'") != std::string::npos);
+  // Free fall from y = 0.2 + d/2 reaches y < 0 after about sqrt(2 * 0.225 / g) = 0.21 s.
+  auto time = test::json_number(test::read_text(dir / "out" / "summary.json"), "simulated_time");
+  CHECK(time == doctest::Approx(0.214).epsilon(0.05));
+  CHECK(dataset_dims(dir / "out" / "frames" / "frame_00004.h5", "position").size() == 2);
+}
+
+TEST_CASE("failure: a collapsing time step stops the run with exit code 3") {
+  auto dir = test::scratch("failure_dt");
+  test::write_text(dir / "falling.toml", kFallingBlock);
+  RunOptions opt;
+  opt.scene = (dir / "falling.toml").string();
+  opt.out_dir = (dir / "out").string();
+  opt.quiet = true;
+  opt.sets = {"time.dt_min=0.5"};  // every adaptive step is below this
+  CHECK(run_scene(opt) == kExitNumericalFailure);
+  auto message = test::json_raw(test::read_text(dir / "out" / "summary.json"), "message");
+  CHECK(message.find("step 0 (t = 0 s): time step") == 0);
+  CHECK(message.find("fell below time.dt_min = 0.5 s (system 'time_step_control')") != std::string::npos);
+}
