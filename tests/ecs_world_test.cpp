@@ -70,20 +70,7 @@ std::vector<std::string> columns_of(const std::string& scene_text) {
   sched.initialise();
   return world.column_names();
 }
-const char* kSceneBase = R"(
-[scene]
-dimension = 2
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[particles]
-spacing = 0.05
-[time]
-end = 0.1
-[[fluid]]
-min = [0.2, 0.2]
-max = [0.6, 0.6]
-)";
+const std::string kSceneBase = test::block_scene("[0.2, 0.2]", "[0.6, 0.6]", 0.1);
 bool contains(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
 }
@@ -96,15 +83,15 @@ TEST_CASE("world: a scene pays only for what it models") {
   CHECK_FALSE(contains(plain, "scalar"));         // no passive scalar system
   CHECK(contains(plain, "density"));
 
-  auto viscous = columns_of<2>(std::string(kSceneBase) + "[material]\nviscosity = 1e-3\n");
+  auto viscous = columns_of<2>(kSceneBase + "[material]\nviscosity = 1e-3\n");
   CHECK(contains(viscous, "viscosity"));
   CHECK_FALSE(contains(viscous, "scalar"));
 
-  auto scalar = columns_of<2>(std::string(kSceneBase) +
+  auto scalar = columns_of<2>(kSceneBase +
                               "[[systems]]\nname = \"passive_scalar_diffusion\"\ndiffusivity = 1e-3\n");
   CHECK(contains(scalar, "scalar"));
   CHECK_FALSE(contains(scalar, "viscosity"));
 
-  auto no_delta = columns_of<2>(std::string(kSceneBase) + "[method]\ndelta = 0.0\n");
+  auto no_delta = columns_of<2>(kSceneBase + "[method]\ndelta = 0.0\n");
   CHECK_FALSE(contains(no_delta, "density_gradient"));
 }

@@ -143,21 +143,8 @@ TEST_CASE("cli: exit codes and scene reference") {
 }
 
 namespace {
-const char* kFallingBlock = R"([scene]
-dimension = 2
-[domain]
-min = [0.0, 0.0]
-max = [1.0, 1.0]
-[particles]
-spacing = 0.05
-[time]
-end = 1.0
-[output]
-interval = 0.05
-[[fluid]]
-min = [0.3, 0.2]
-max = [0.7, 0.6]
-)";
+// No walls: the block falls out of the bottom of the domain.
+const std::string kFallingBlock = test::block_scene("[0.3, 0.2]", "[0.7, 0.6]", 1.0, "[output]\ninterval = 0.05\n");
 }  // namespace
 
 TEST_CASE("failure: a particle leaving the domain names itself and the system that moved it") {

@@ -36,6 +36,13 @@ inline void write_text(const fs::path& p, const std::string& text) {
   std::ofstream(p) << text;
 }
 
+// A 2D scene in the unit box with one fluid block and no walls; `extra` is appended (TOML).
+inline std::string block_scene(const std::string& fluid_min, const std::string& fluid_max, double end,
+                               const std::string& extra = "") {
+  return "[scene]\ndimension = 2\n[domain]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n[particles]\nspacing = 0.05\n"
+         "[time]\nend = " + std::to_string(end) + "\n[[fluid]]\nmin = " + fluid_min + "\nmax = " + fluid_max + "\n" + extra;
+}
+
 // Columns of a CSV with a header row.
 inline std::map<std::string, std::vector<double>> read_csv(const fs::path& p) {
   std::ifstream in(p);

@@ -43,12 +43,13 @@ class ContinuityDeltaSph final : public System<D> {
       double divergence = 0, diffusive = 0;
       for (auto j : nl.of(i)) {
         Vec<D> xij = periodic ? p_.domain.displacement(x[i], x[j]) : Vec<D>(x[i] - x[j]);
-        double r2 = xij.squaredNorm();
-        Vec<D> gradW = xij * p_.kernel.grad_factor(std::sqrt(r2));
+        const double F = p_.kernel.grad_factor(std::sqrt(xij.squaredNorm()));
+        Vec<D> gradW = xij * F;
         double Vj = m[j] / rho[j];
         divergence += Vj * (v[i] - v[j]).dot(gradW);
-        if (diffusion > 0 && kind[j] == kFluid && r2 > 0) {
-          double pair = 2.0 * (rho[j] - rho[i]) * (-xij.dot(gradW)) / r2;
+        if (diffusion > 0 && kind[j] == kFluid) {
+          // (x_j - x_i) . grad_i W_ij / r^2 = -F exactly, so no division per pair.
+          double pair = -2.0 * (rho[j] - rho[i]) * F;
           diffusive += Vj * (pair - (grad[i] + grad[j]).dot(gradW));
         }
       }
