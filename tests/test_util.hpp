@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -62,12 +61,11 @@ inline std::map<std::string, std::vector<double>> read_csv(const fs::path& p) {
 
 // The first "key": value in a JSON text (flat look-up is enough for summary.json).
 inline std::string json_raw(const std::string& json, const std::string& key) {
-  std::regex re("\"" + key + "\": (\"[^\"]*\"|[^,\\n}]+)");
-  std::smatch m;
-  if (!std::regex_search(json, m, re)) return "";
-  std::string v = m[1];
-  if (!v.empty() && v.front() == '"') v = v.substr(1, v.size() - 2);
-  return v;
+  auto at = json.find("\"" + key + "\": ");
+  if (at == std::string::npos) return "";
+  at += key.size() + 4;
+  if (json[at] == '"') return json.substr(at + 1, json.find('"', at + 1) - at - 1);
+  return json.substr(at, json.find_first_of(",\n}", at) - at);
 }
 inline double json_number(const std::string& json, const std::string& key) {
   return std::strtod(json_raw(json, key).c_str(), nullptr);

@@ -44,11 +44,11 @@ std::string Profiler::table() const {
   double total = accounted_s();
   std::ostringstream out;
   char line[256];
-  std::snprintf(line, sizeof line, "%-34s %10s %11s %11s %7s\n", "system", "calls", "total_s",
+  std::snprintf(line, sizeof line, "%-40s %10s %11s %11s %7s\n", "system", "calls", "total_s",
                 "mean_us", "share");
   out << line;
   for (auto& e : sorted) {
-    std::snprintf(line, sizeof line, "%-34s %10lld %11.3f %11.1f %6.1f%%\n", e.name.c_str(),
+    std::snprintf(line, sizeof line, "%-40s %10lld %11.3f %11.1f %6.1f%%\n", e.name.c_str(),
                   static_cast<long long>(e.calls), e.total_s,
                   e.calls ? 1e6 * e.total_s / e.calls : 0.0,
                   total > 0 ? 100.0 * e.total_s / total : 0.0);

@@ -9,6 +9,7 @@
 #include "methods/system_registry.hpp"
 #include "scene/scene.hpp"
 #include "scene/schema.hpp"
+#include "systems/kernels/kernel.hpp"
 
 namespace ryushi {
 
@@ -16,6 +17,9 @@ double Scene::fluid_height() const {
   double h = 0;
   for (auto& b : fluid) h = std::max(h, b.max.back() - b.min.back());
   return h;
+}
+double Scene::support_radius() const {
+  return Kernel<2>(kernel_from_name(kernel), smoothing_length()).support();
 }
 double Scene::gravity_magnitude() const {
   double g2 = 0;

@@ -55,7 +55,7 @@ struct Scene {
   std::vector<SystemSpec> systems;
 
   double smoothing_length() const { return smoothing_ratio * spacing; }
-  double support_radius() const { return 2.0 * smoothing_length(); }
+  double support_radius() const;  // the kernel's support (2h for most kernels)
   // Height of the tallest fluid block along the last axis (for c0 and hydrostatics).
   double fluid_height() const;
   double gravity_magnitude() const;

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "methods/system_registry.hpp"
+#include "systems/kernels/kernel.hpp"
 
 namespace ryushi {
 
@@ -50,7 +51,7 @@ std::vector<SectionSpec> build() {
   s.push_back({"particles", false, true, "Particle lattice and kernel.",
                {positive("spacing", "m", "", "Initial particle spacing d (lattice step).", true),
                 ranged({"smoothing_ratio", K::Float, "", "1.5", "Smoothing length h = smoothing_ratio * spacing; support radius 2h. 1.5 with Wendland C2 keeps the lattice first moment within 0.3% of the identity (1.3 gives 2.6%, which shows up as a 2.6% pressure error at rest)."}, 0.5, 4.0),
-                choice("kernel", "\"wendland_c2\"", "Smoothing kernel.", {"wendland_c2", "cubic_spline"}),
+                choice("kernel", "\"wendland_c2\"", "Smoothing kernel (src/systems/kernels/kernel.hpp). Support radius: 2h, except quintic_spline 3h and mps h (h = r_e).", kernel_names()),
                 ranged({"reorder_interval", K::Integer, "steps", "25",
                         "Reorder particles by cell every this many steps for cache locality (0: never). Ids are stable."}, 0, std::nullopt)}});
   s.push_back({"material", false, false, "Fluid properties.",

@@ -1,0 +1,83 @@
+// Kernels: normalisation (radial Gauss-Legendre quadrature per piece, to 1e-6), gradient
+// against a central finite difference, compact support, continuity at the piece joints.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "systems/kernels/kernel.hpp"
+
+using namespace ryushi;
+
+namespace {
+
+// 20-point Gauss-Legendre on [a, b], composite over n panels.
+template <class F>
+double integrate(F f, double a, double b, int panels = 64) {
+  static const double x[10] = {0.0765265211334973, 0.2277858511416451, 0.3737060887154195, 0.5108670019508271,
+                               0.6360536807265150, 0.7463319064601508, 0.8391169718222188, 0.9122344282513259,
+                               0.9639719272779138, 0.9931285991850949};
+  static const double w[10] = {0.1527533871307258, 0.1491729864726037, 0.1420961093183820, 0.1316886384491766,
+                               0.1181945319615184, 0.1019301198172404, 0.0832767415767048, 0.0626720483341091,
+                               0.0406014298003869, 0.0176140071391521};
+  double sum = 0, hpan = (b - a) / panels;
+  for (int p = 0; p < panels; ++p) {
+    double m = a + (p + 0.5) * hpan, r = 0.5 * hpan;
+    for (int k = 0; k < 10; ++k) sum += w[k] * r * (f(m - r * x[k]) + f(m + r * x[k]));
+  }
+  return sum;
+}
+
+// Radii where the piecewise definition changes (in units of h).
+std::vector<double> joints(KernelType t) {
+  switch (t) {
+    case KernelType::CubicSpline: return {1.0};
+    case KernelType::QuinticSpline: return {1.0, 2.0};
+    default: return {};
+  }
+}
+
+template <int D>
+void check_kernel(KernelType type) {
+  const double h = 0.37;
+  Kernel<D> k(type, h);
+  const double R = k.support();
+  auto shell = [&](double r) { return k.w(r) * (D == 2 ? 2 * std::numbers::pi * r : 4 * std::numbers::pi * r * r); };
+  // Integrate piece by piece so the quadrature never straddles a kink.
+  std::vector<double> cuts{0.0};
+  for (double j : joints(type)) cuts.push_back(j * h);
+  cuts.push_back(R);
+  double total = 0;
+  for (std::size_t p = 0; p + 1 < cuts.size(); ++p) total += integrate(shell, cuts[p], cuts[p + 1]);
+  CHECK_MESSAGE(std::abs(total - 1.0) < 1e-6, "normalisation " << total);
+
+  for (double q = 0.05; q < 0.999 * k.support_factor(); q += 0.0731) {
+    const double r = q * h, eps = 1e-6 * h;
+    const double fd = (k.w(r + eps) - k.w(r - eps)) / (2 * eps);
+    CHECK_MESSAGE(k.grad_factor(r) * r == doctest::Approx(fd).epsilon(1e-6).scale(k.w(0.05 * h) / h),
+                  "dW/dr at q = " << q);
+  }
+  // Exactly zero beyond the support (at R itself q = R/h may round a hair below the cut-off).
+  CHECK(k.w(R * (1 + 1e-12)) == 0.0);
+  CHECK(std::abs(k.w(R)) < 1e-12 * k.w(0.5 * h));
+  CHECK(k.w(1.5 * R) == 0.0);
+  CHECK(k.grad_factor(R * (1 + 1e-12)) == 0.0);
+  CHECK(k.grad_factor(R * 1.01) == 0.0);
+  CHECK(k.w(0.999999 * R) < 1e-6 * k.w(0.5 * R) + (type == KernelType::Mps ? 1e-5 * k.w(0.5 * R) : 0.0));
+  for (double j : joints(type)) {
+    const double eps = 1e-9 * h;
+    CHECK(k.w(j * h - eps) == doctest::Approx(k.w(j * h + eps)).epsilon(1e-7));
+    CHECK(k.grad_factor(j * h - eps) == doctest::Approx(k.grad_factor(j * h + eps)).epsilon(1e-6));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("kernels: normalised, differentiable, compact, continuous at joints (2D and 3D)") {
+  for (const auto& name : kernel_names()) {
+    CAPTURE(name);
+    check_kernel<2>(kernel_from_name(name));
+    check_kernel<3>(kernel_from_name(name));
+  }
+  CHECK_THROWS_AS(kernel_from_name("gaussian"), std::invalid_argument);
+}
