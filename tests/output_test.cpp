@@ -135,6 +135,11 @@ TEST_CASE("cli: exit codes and scene reference") {
   auto bad_set = test::run_command(bin + " check " + test::scene_path("dam_break_2d.toml") + " --set time.end=-1");
   CHECK(bad_set.code == 2);
   CHECK(bad_set.output == "ryushi: --set time.end=-1: 'end' in [time] is -1; it must be > 0\n");
+  auto patch = test::run_command(bin + " patch-test --dim 2 --operator laplacian-sph2 --spacings 0.05 0.025");
+  CHECK(patch.code == 0);
+  CHECK(patch.output.find("rmse_interior") != std::string::npos);
+  CHECK(patch.output.rfind("order_interior=") == patch.output.rfind('\n', patch.output.size() - 2) + 1);
+  CHECK(test::run_command(bin + " patch-test --operator laplacian-magic").code == 2);
   // docs/scenes.md is exactly what the loader's schema says.
   auto keys = test::run_command(bin + " keys --markdown");
   CHECK(keys.code == 0);

@@ -1,0 +1,43 @@
+#pragma once
+// Gradient operators of a scalar field f at particle i.
+//   standard   sum_j V_j (f_j - f_i) gW_ij                      (V&V eq. 4; exact only if M_i = I)
+//   symmetric  sum_j V_j (f_i + f_j) gW_ij                      (the momentum form
+//              rho_i sum_j m_j (f_i/rho_i^2 + f_j/rho_j^2) gW_ij at uniform density; conserves
+//              momentum pairwise but is not consistent even to zeroth order on a cut support)
+//   corrected  L_i sum_j V_j (f_j - f_i) gW_ij                  (ISPH eqs. 9-10; exact for linear f)
+//   mps        d/n0 sum_j (f_j - f_i) r_ij / |r_ij|^2 w_ij      (MPS, with f_i in place of the
+//              local minimum so that the operator is linear)
+#include "systems/operators/renormalisation.hpp"
+
+namespace ryushi {
+
+template <int D>
+Vec<D> gradient_standard(const ParticleView<D>& v, std::span<const double> f, std::size_t i) {
+  Vec<D> g = Vec<D>::Zero();
+  for (auto j : v.neighbours.of(i)) g += v.volume[j] * (f[j] - f[i]) * v.grad_w(v.r(i, j));
+  return g;
+}
+
+template <int D>
+Vec<D> gradient_symmetric(const ParticleView<D>& v, std::span<const double> f, std::size_t i) {
+  Vec<D> g = Vec<D>::Zero();
+  for (auto j : v.neighbours.of(i)) g += v.volume[j] * (f[i] + f[j]) * v.grad_w(v.r(i, j));
+  return g;
+}
+
+template <int D>
+Vec<D> gradient_corrected(const ParticleView<D>& v, std::span<const double> f, std::size_t i) {
+  return renormalisation(v, i) * gradient_standard(v, f, i);
+}
+
+template <int D>
+Vec<D> gradient_mps(const ParticleView<D>& v, std::span<const double> f, std::size_t i, double n0) {
+  Vec<D> g = Vec<D>::Zero();
+  for (auto j : v.neighbours.of(i)) {
+    Vec<D> r = v.r(i, j);
+    g += (f[j] - f[i]) / r.squaredNorm() * v.kernel.w(r.norm()) * r;
+  }
+  return (D / n0) * g;
+}
+
+}  // namespace ryushi

@@ -1,0 +1,80 @@
+#pragma once
+// SPH(2): all second derivatives of f at particle i, exact for quadratic fields on any particle
+// configuration with a non-degenerate support (V&V paper eqs. 6-16):
+//   [M_i] (D f)_i = 2 sum_j V_j q_ij (f_j - f_i - r_ij . <grad f>_1) F_ij
+//   M_i = sum_j V_j q_ij p_ij^T F_ij,   F_ij = r_ij . gW~_ij / |r_ij|^4,   gW~ = L_i gW
+//   q_ij = (r_I r_J)_{I<=J},  p_ij = (A(I,J))_{I<=J},  A(I,J) = r_I r_J - r_ij . sum_k V_k r_I^ik r_J^ik gW~_ik
+//   D f = (f_xx, f_yy, 2 f_xy) in 2D; (f_xx, f_yy, f_zz, 2 f_xy, 2 f_xz, 2 f_yz) in 3D.
+// The 3x3 (2D) / 6x6 (3D) system is solved with fixed-size Eigen. Where M_i or L_i is singular
+// (too few neighbours) the Hessian falls back to (standard Laplacian / D) I.
+// Also the second-order gradient of eq. 6: <grad f>_2 = <grad f>_1 - 1/2 sum_k V_k (r^T H r) gW~_k.
+#include <Eigen/LU>
+
+#include "systems/operators/gradient.hpp"
+#include "systems/operators/laplacian.hpp"
+
+namespace ryushi {
+
+template <int D>
+struct SecondOrderDerivatives {
+  Mat<D> hessian;
+  Vec<D> gradient;  // second-order gradient, eq. 6
+  bool corrected;   // false where the fallback was used
+};
+
+template <int D>
+SecondOrderDerivatives<D> second_derivatives_sph2(const ParticleView<D>& v, std::span<const double> f, std::size_t i) {
+  constexpr int K = kSymmetricCount<D>;
+  constexpr auto pairs = symmetric_pairs<D>();
+  bool corrected = false;
+  const Mat<D> L = renormalisation(v, i, &corrected);
+  auto fallback = [&] {
+    double lap = laplacian_standard(v, f, i);
+    return SecondOrderDerivatives<D>{Mat<D>::Identity() * (lap / D), gradient_standard(v, f, i), false};
+  };
+  if (!corrected) return fallback();
+  Vec<D> G1 = Vec<D>::Zero();
+  std::array<Vec<D>, K> Q;  // sum_k V_k r_I r_J gW~_k
+  Q.fill(Vec<D>::Zero());
+  for (auto j : v.neighbours.of(i)) {
+    Vec<D> r = v.r(i, j), gw = v.volume[j] * (L * v.grad_w(r));
+    G1 += (f[j] - f[i]) * gw;
+    for (int p = 0; p < K; ++p) Q[p] += gw * r[pairs[p].first] * r[pairs[p].second];
+  }
+  Eigen::Matrix<double, K, K> M = Eigen::Matrix<double, K, K>::Zero();
+  Eigen::Matrix<double, K, 1> rhs = Eigen::Matrix<double, K, 1>::Zero();
+  for (auto j : v.neighbours.of(i)) {
+    Vec<D> r = v.r(i, j), gw = L * v.grad_w(r);
+    double r2 = r.squaredNorm();
+    double F = r.dot(gw) / (r2 * r2);
+    Eigen::Matrix<double, K, 1> q, p;
+    for (int k = 0; k < K; ++k) {
+      auto [a, b] = pairs[k];
+      q[k] = r[a] * r[b];
+      p[k] = q[k] - r.dot(Q[k]);
+    }
+    M += v.volume[j] * F * q * p.transpose();
+    rhs += v.volume[j] * F * (f[j] - f[i] - r.dot(G1)) * q;
+  }
+  Eigen::FullPivLU<Eigen::Matrix<double, K, K>> lu(M);
+  if (!lu.isInvertible()) return fallback();
+  Eigen::Matrix<double, K, 1> Df = 2.0 * lu.solve(rhs);
+  SecondOrderDerivatives<D> out{Mat<D>::Zero(), G1, true};
+  for (int k = 0; k < K; ++k) {
+    auto [a, b] = pairs[k];
+    if (a == b) {
+      out.hessian(a, a) = Df[k];
+    } else {
+      out.hessian(a, b) = out.hessian(b, a) = 0.5 * Df[k];
+    }
+  }
+  // eq. 6: remove the quadratic part from the first-order gradient.
+  for (int k = 0; k < K; ++k) {
+    auto [a, b] = pairs[k];
+    double weight = (a == b ? 1.0 : 2.0) * out.hessian(a, b);
+    out.gradient -= 0.5 * weight * Q[k];
+  }
+  return out;
+}
+
+}  // namespace ryushi
