@@ -1,0 +1,72 @@
+// Free-surface detection as a registered system: scenes add it with
+//   [[systems]]
+//   name = "free_surface_detection"
+//   rule = "isph2"        # marrone | isph2 | mps
+// and get the per-particle columns `free_surface` (1 on the surface) and `surface_normal`.
+#include "methods/system_registry.hpp"
+#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/free_surface/free_surface_detection.hpp"
+
+namespace ryushi {
+
+inline constexpr Component<Flags> free_surface_flag{"free_surface"};
+inline constexpr Component<Vector> surface_normal_component{"surface_normal"};
+
+template <int D>
+class FreeSurfaceDetection final : public System<D> {
+ public:
+  FreeSurfaceDetection(const toml::table& params, const WcsphParameters<D>& physics)
+      : physics_(physics), rule_(free_surface_rule(*params["rule"].value<std::string>())) {
+    p_.beta = *params["beta"].value<double>();
+    if (rule_ == FreeSurfaceRule::Mps) n0_ = mps_reference<D>(physics_.kernel, physics_.spacing).n0;
+  }
+  std::string name() const override { return "free_surface_detection"; }
+  Access access() const override {
+    return Access{}
+        .read(components::position, components::mass, components::density, components::kind, neighbours_resource)
+        .write(free_surface_flag, surface_normal_component);
+  }
+  void run(SystemContext<D>& ctx) override {
+    auto m = ctx.read(components::mass);
+    auto rho = ctx.read(components::density);
+    volume_.resize(m.size());
+    for (std::size_t i = 0; i < m.size(); ++i) volume_[i] = m[i] / rho[i];
+    ParticleView<D> view{ctx.read(components::position), volume_, ctx.read(neighbours_resource), physics_.kernel,
+                         physics_.domain};
+    auto flag = ctx.write(free_surface_flag);
+    auto normal = ctx.write(surface_normal_component);
+    for_each_of_kind(ctx.read(components::kind), kFluid, [&](std::size_t i) {
+      auto r = detect_free_surface(view, i, rule_, p_, n0_);
+      flag[i] = r.surface;
+      normal[i] = r.normal;
+    });
+  }
+
+ private:
+  WcsphParameters<D> physics_;
+  FreeSurfaceRule rule_;
+  FreeSurfaceParameters p_;
+  double n0_ = 0;
+  std::vector<double> volume_;
+};
+
+namespace {
+KeySpec rule_key() {
+  KeySpec k{"rule", KeyType::String, "", "\"isph2\"", "marrone (eigenvalue + scan region), isph2 (marrone + det(M) < 0.6) or mps (n < beta n0)."};
+  k.choices = {"marrone", "isph2", "mps"};
+  return k;
+}
+KeySpec beta_key() {
+  KeySpec k{"beta", KeyType::Float, "", "0.85", "Threshold of the mps rule."};
+  k.min = 0.0;
+  k.max = 1.0;
+  k.min_exclusive = true;
+  return k;
+}
+}  // namespace
+
+RYUSHI_REGISTER_SYSTEM(FreeSurfaceDetection, "free_surface_detection",
+                       "Flags free-surface fluid particles (`free_surface` = 1) and writes their outward unit normal (`surface_normal`).",
+                       {rule_key(), beta_key()});
+
+}  // namespace ryushi
