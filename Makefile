@@ -40,11 +40,16 @@ test-sanitize: deps
 	cmake --build build-sanitize -j$(JOBS)
 	cd build-sanitize && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j$(JOBS)
 
-bench: build
+bench: build py-deps
 	$(BUILD)/bench/ryushi_bench_neighbours
 	tools/bench_dam_break.sh $(BUILD)
+	mkdir -p docs/img
+	$(BUILD)/bench/ryushi_bench_operators docs/img/operators.csv 2
+	/usr/bin/python3 tools/plot_operators.py docs/img/operators.csv docs/img/operators_speed_accuracy.png
 
 plots: build py-deps
+	mkdir -p docs/img
+	test -f out/dam_break_2d/probes.csv || $(BUILD)/ryushi run scenes/dam_break_2d.toml --out out/dam_break_2d --quiet
 	/usr/bin/python3 tools/plot_dam_break.py out/dam_break_2d docs/img/dam_break_front.png
 
 docs: build
