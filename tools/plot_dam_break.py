@@ -20,8 +20,9 @@ def main():
     g = 9.81
     run = np.genfromtxt(os.path.join(out, "probes.csv"), delimiter=",", names=True)
     here = os.path.dirname(os.path.abspath(__file__))
-    ref = np.genfromtxt(os.path.join(here, "reference", "martin_moyce_1952_n2_2.csv"), delimiter=",",
-                        names=True, comments="#")
+    with open(os.path.join(here, "reference", "martin_moyce_1952_n2_2.csv")) as f:
+        lines = [l for l in f if l.strip() and not l.startswith("#")]
+    ref = np.genfromtxt(lines, delimiter=",", names=True)
     T = run["time"] * np.sqrt(2 * g / a)
     Z = run["surge_front"] / a
     fig, ax = plt.subplots(figsize=(6, 4))

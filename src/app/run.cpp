@@ -201,6 +201,11 @@ class Runner {
       status = "failed";
       code = kExitNumericalFailure;
       message = e.what();
+    } catch (const std::exception& e) {
+      // An internal error: still leave a summary that says what happened, then report it.
+      progress.finish();
+      finish("error", e.what());
+      throw;
     }
     progress.finish();
     finish(status, message);
@@ -356,7 +361,11 @@ class Runner {
 
 std::vector<std::string> with_end_time(const RunOptions& opt) {
   auto sets = opt.sets;
-  if (opt.end_time) sets.push_back("time.end=" + std::to_string(*opt.end_time));
+  if (opt.end_time) {
+    char value[40];
+    std::snprintf(value, sizeof value, "%.17g", *opt.end_time);  // exact round trip
+    sets.push_back(std::string("time.end=") + value);
+  }
   return sets;
 }
 
