@@ -1,23 +1,19 @@
 #pragma once
-// Renormalised density gradient <grad rho>_i = L_i sum_j V_j (rho_j - rho_i) grad_i W_ij with
-// L_i = [sum_j V_j (x_j - x_i) (x) grad_i W_ij]^-1 (seed 002 eqs. 20-21), feeding the delta-SPH
-// diffusion term. Where L_i cannot be inverted reliably (a particle with few neighbours, e.g.
-// a splash) the uncorrected gradient is used: det(M_i) below kMinDeterminant.
-#include <Eigen/LU>
-
+// Renormalised density gradient <grad rho>_i = L_i sum_j V_j (rho_j - rho_i) grad_i W_ij
+// (seed 002 eqs. 20-21), feeding the delta-SPH diffusion term. It is the corrected gradient of
+// the operator library (systems/operators/gradient.hpp) applied to the density with volumes
+// V_j = m_j / rho_j, including its documented fallback to the uncorrected gradient where L_i is
+// ill-conditioned (a splash).
 #include "ecs/system.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
-#include "systems/neighbour/neighbour_list.hpp"
+#include "systems/operators/gradient.hpp"
 
 namespace ryushi {
 
 template <int D>
 class RenormalisedDensityGradient final : public System<D> {
  public:
-  // For a full, regular neighbourhood M_i = I; below this its inverse amplifies noise.
-  static constexpr double kMinDeterminant = 0.1;
-
   explicit RenormalisedDensityGradient(const WcsphParameters<D>& p) : p_(p) {}
   std::string name() const override { return "density_gradient_renormalised"; }
   Access access() const override {
@@ -27,29 +23,20 @@ class RenormalisedDensityGradient final : public System<D> {
         .write(components::density_gradient);
   }
   void run(SystemContext<D>& ctx) override {
-    auto x = ctx.read(components::position);
     auto rho = ctx.read(components::density);
     auto m = ctx.read(components::mass);
-    auto kind = ctx.read(components::kind);
-    auto& nl = ctx.read(neighbours_resource);
+    volume_.resize(rho.size());
+    tbb::parallel_for(std::size_t(0), rho.size(), [&](std::size_t i) { volume_[i] = m[i] / rho[i]; });
+    ParticleView<D> view{ctx.read(components::position), volume_, ctx.read(neighbours_resource), p_.kernel,
+                         p_.domain};
     auto grad = ctx.write(components::density_gradient);
-    const bool periodic = p_.domain.any_periodic();
-    for_each_of_kind(kind, kFluid, [&](std::size_t i) {
-      Mat<D> M = Mat<D>::Zero();
-      Vec<D> g = Vec<D>::Zero();
-      for (auto j : nl.of(i)) {
-        Vec<D> xij = periodic ? p_.domain.displacement(x[i], x[j]) : Vec<D>(x[i] - x[j]);
-        Vec<D> gradW = xij * p_.kernel.grad_factor(xij.norm());
-        double Vj = m[j] / rho[j];
-        M -= Vj * xij * gradW.transpose();  // (x_j - x_i) (x) grad W
-        g += Vj * (rho[j] - rho[i]) * gradW;
-      }
-      grad[i] = std::abs(M.determinant()) > kMinDeterminant ? Vec<D>(M.inverse() * g) : g;
-    });
+    for_each_of_kind(ctx.read(components::kind), kFluid,
+                     [&](std::size_t i) { grad[i] = gradient_corrected(view, rho, i); });
   }
 
  private:
   WcsphParameters<D> p_;
+  std::vector<double> volume_;
 };
 
 }  // namespace ryushi

@@ -27,7 +27,15 @@ Vec<D> gradient_symmetric(const ParticleView<D>& v, std::span<const double> f, s
 
 template <int D>
 Vec<D> gradient_corrected(const ParticleView<D>& v, std::span<const double> f, std::size_t i) {
-  return renormalisation(v, i) * gradient_standard(v, f, i);
+  // One pass gathers both the moment matrix and the uncorrected gradient.
+  Mat<D> M = Mat<D>::Zero();
+  Vec<D> g = Vec<D>::Zero();
+  for (auto j : v.neighbours.of(i)) {
+    Vec<D> r = v.r(i, j), gw = v.volume[j] * v.grad_w(r);
+    M += gw * r.transpose();
+    g += (f[j] - f[i]) * gw;
+  }
+  return M.determinant() > kMinRenormalisationDeterminant ? Vec<D>(M.inverse() * g) : g;
 }
 
 template <int D>
