@@ -202,7 +202,6 @@ void apply_override(toml::table& root, const std::string& text, Validator& val) 
     key = parts[1];
     key_path = parts[0] + "." + key;
   }
-  toml::node_view<toml::node> parsed;
   toml::table holder;
   try {
     holder = toml::parse("v = " + value);

@@ -43,56 +43,54 @@ double least_squares_order(const std::vector<double>& d, const std::vector<doubl
 namespace {
 
 // An operator result has up to D components; exact and approximate values are compared as
-// vectors (one component for scalar results).
+// vectors (scalar results in component 0, the others left zero).
 template <int D>
-using Evaluate = std::function<void(const ParticleView<D>&, std::size_t, Vec<D>& approx, Vec<D>& exact, int& components)>;
+using Evaluate = std::function<void(const ParticleView<D>&, std::size_t, Vec<D>& approx, Vec<D>& exact)>;
 
 template <int D>
 Evaluate<D> make_operator(const std::string& op, std::span<const double> f, std::span<const Vec<D>> u,
                           const std::vector<FrankeValue<D>>& exact, const MpsReference& mps) {
-  auto scalar = [](double a, double e, Vec<D>& approx, Vec<D>& ex, int& n) {
+  auto scalar = [](double a, double e, Vec<D>& approx, Vec<D>& ex) {
     approx[0] = a;
     ex[0] = e;
-    n = 1;
   };
   if (op == "gradient-standard" || op == "gradient-symmetric" || op == "gradient-corrected" ||
       op == "gradient-sph2" || op == "gradient-mps")
-    return [=, &exact](const ParticleView<D>& v, std::size_t i, Vec<D>& a, Vec<D>& e, int& n) {
+    return [=, &exact](const ParticleView<D>& v, std::size_t i, Vec<D>& a, Vec<D>& e) {
       if (op == "gradient-standard") a = gradient_standard(v, f, i);
       else if (op == "gradient-symmetric") a = gradient_symmetric(v, f, i);
       else if (op == "gradient-corrected") a = gradient_corrected(v, f, i);
       else if (op == "gradient-sph2") a = second_derivatives_sph2(v, f, i).gradient;
       else a = gradient_mps(v, f, i, mps.n0);
       e = exact[i].gradient;
-      n = D;
     };
   if (op == "divergence-standard")
-    return [=, &exact](const ParticleView<D>& v, std::size_t i, Vec<D>& a, Vec<D>& e, int& n) {
-      scalar(divergence_standard(v, u, i), exact[i].hessian.trace(), a, e, n);
+    return [=, &exact](const ParticleView<D>& v, std::size_t i, Vec<D>& a, Vec<D>& e) {
+      scalar(divergence_standard(v, u, i), exact[i].hessian.trace(), a, e);
     };
   if (op == "divergence-corrected")
-    return [=, &exact](const ParticleView<D>& v, std::size_t i, Vec<D>& a, Vec<D>& e, int& n) {
-      scalar(divergence_corrected(v, u, i), exact[i].hessian.trace(), a, e, n);
+    return [=, &exact](const ParticleView<D>& v, std::size_t i, Vec<D>& a, Vec<D>& e) {
+      scalar(divergence_corrected(v, u, i), exact[i].hessian.trace(), a, e);
     };
   if (op == "laplacian-standard")
-    return [=, &exact](const ParticleView<D>& v, std::size_t i, Vec<D>& a, Vec<D>& e, int& n) {
-      scalar(laplacian_standard(v, f, i), exact[i].hessian.trace(), a, e, n);
+    return [=, &exact](const ParticleView<D>& v, std::size_t i, Vec<D>& a, Vec<D>& e) {
+      scalar(laplacian_standard(v, f, i), exact[i].hessian.trace(), a, e);
     };
   if (op == "laplacian-corrected")
-    return [=, &exact](const ParticleView<D>& v, std::size_t i, Vec<D>& a, Vec<D>& e, int& n) {
-      scalar(laplacian_corrected(v, f, i), exact[i].hessian.trace(), a, e, n);
+    return [=, &exact](const ParticleView<D>& v, std::size_t i, Vec<D>& a, Vec<D>& e) {
+      scalar(laplacian_corrected(v, f, i), exact[i].hessian.trace(), a, e);
     };
   if (op == "laplacian-sph2")
-    return [=, &exact](const ParticleView<D>& v, std::size_t i, Vec<D>& a, Vec<D>& e, int& n) {
-      scalar(second_derivatives_sph2(v, f, i).hessian.trace(), exact[i].hessian.trace(), a, e, n);
+    return [=, &exact](const ParticleView<D>& v, std::size_t i, Vec<D>& a, Vec<D>& e) {
+      scalar(second_derivatives_sph2(v, f, i).hessian.trace(), exact[i].hessian.trace(), a, e);
     };
   if (op == "laplacian-mps")
-    return [=, &exact](const ParticleView<D>& v, std::size_t i, Vec<D>& a, Vec<D>& e, int& n) {
-      scalar(laplacian_mps(v, f, i, mps.n0, mps.lambda0), exact[i].hessian.trace(), a, e, n);
+    return [=, &exact](const ParticleView<D>& v, std::size_t i, Vec<D>& a, Vec<D>& e) {
+      scalar(laplacian_mps(v, f, i, mps.n0, mps.lambda0), exact[i].hessian.trace(), a, e);
     };
   if (op == "mixed-sph2")
-    return [=, &exact](const ParticleView<D>& v, std::size_t i, Vec<D>& a, Vec<D>& e, int& n) {
-      scalar(second_derivatives_sph2(v, f, i).hessian(0, 1), exact[i].hessian(0, 1), a, e, n);
+    return [=, &exact](const ParticleView<D>& v, std::size_t i, Vec<D>& a, Vec<D>& e) {
+      scalar(second_derivatives_sph2(v, f, i).hessian(0, 1), exact[i].hessian(0, 1), a, e);
     };
   std::string list;
   for (auto& o : patch_test_operators()) list += (list.empty() ? "" : ", ") + o;
@@ -143,19 +141,15 @@ PatchTestRow run_one(const PatchTestOptions& o, double d) {
   auto evaluate = make_operator<D>(o.op, f, u, exact, mps);
 
   std::vector<Vec<D>> approx(x.size()), truth(x.size());
-  int components = 1;
   auto t0 = std::chrono::steady_clock::now();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, x.size(), 512), [&](auto r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
       approx[i].setZero();
       truth[i].setZero();
-      int c = 1;
-      evaluate(view, i, approx[i], truth[i], c);
-      if (i == 0) components = c;
+      evaluate(view, i, approx[i], truth[i]);  // scalars use component 0; the rest stay zero
     }
   });
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  (void)components;
   double num[2] = {0, 0}, den[2] = {0, 0};
   std::size_t count[2] = {0, 0};
   const double R = kernel.support();
