@@ -1,0 +1,183 @@
+#include "solvers/krylov.hpp"
+
+#include <cmath>
+
+#include "solvers/vector_ops.hpp"
+
+namespace ryushi::solvers {
+
+namespace {
+
+using Vector = std::vector<double>;
+std::span<const double> c(const Vector& v) { return v; }
+
+// |b - A x| / |b| for the x actually returned.
+double true_relative_residual(const CsrMatrix<double>& A, std::span<const double> b, std::span<const double> x) {
+  Vector ax(A.rows);
+  spmv<double, double, double>(A, x, ax);
+  for (std::size_t i = 0; i < ax.size(); ++i) ax[i] = b[i] - ax[i];
+  double nb = std::sqrt(dot(b, b));
+  return std::sqrt(dot(c(ax), c(ax))) / (nb > 0 ? nb : 1.0);
+}
+
+// Rejects input that would make the iteration meaningless; returns a status with a reason, or
+// an empty reason when the input is usable.
+SolveStatus check_input(const CsrMatrix<double>& A, std::span<const double> b, std::span<const double> x) {
+  SolveStatus s;
+  if (A.rows != A.cols) s.reason = "matrix is not square";
+  else if (b.size() != A.rows || x.size() != A.rows) s.reason = "vector length does not match the matrix";
+  for (std::size_t i = 0; s.reason.empty() && i < b.size(); ++i)
+    if (!std::isfinite(b[i])) s.reason = "right-hand side has a non-finite entry at row " + std::to_string(i);
+  for (std::size_t i = 0; s.reason.empty() && i < x.size(); ++i)
+    if (!std::isfinite(x[i])) s.reason = "initial guess has a non-finite entry at row " + std::to_string(i);
+  return s;
+}
+
+SolveStatus finish(const CsrMatrix<double>& A, std::span<const double> b, std::span<const double> x, int it,
+                   double tol, std::string reason) {
+  SolveStatus s;
+  s.iterations = it;
+  s.relative_residual = true_relative_residual(A, b, x);
+  s.converged = reason.empty() && s.relative_residual <= tol * 1.0001;
+  if (reason.empty() && !s.converged)
+    reason = "recursive residual converged but the true residual " + std::to_string(s.relative_residual) + " did not";
+  s.reason = s.converged ? "" : reason;
+  return s;
+}
+
+}  // namespace
+
+void IdentityPreconditioner::apply(std::span<const double> r, std::span<double> z) const {
+  std::copy(r.begin(), r.end(), z.begin());
+}
+
+JacobiPreconditioner::JacobiPreconditioner(const CsrMatrix<double>& A) {
+  auto d = A.diagonal();
+  inverse_diagonal_.resize(d.size());
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    if (d[i] == 0 || !std::isfinite(d[i]))
+      throw std::invalid_argument("Jacobi preconditioner: zero or non-finite diagonal at row " + std::to_string(i));
+    inverse_diagonal_[i] = 1.0 / d[i];
+  }
+}
+
+void JacobiPreconditioner::apply(std::span<const double> r, std::span<double> z) const {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, r.size(), 8192), [&](auto rg) {
+    for (std::size_t i = rg.begin(); i != rg.end(); ++i) z[i] = r[i] * inverse_diagonal_[i];
+  });
+}
+
+SolveStatus conjugate_gradient(const CsrMatrix<double>& A, std::span<const double> b, std::span<double> x,
+                               const Preconditioner& M, const SolveOptions& o) {
+  if (auto s = check_input(A, b, x); !s.reason.empty()) return s;
+  const std::size_t n = A.rows;
+  const double nb = std::sqrt(dot(b, b));
+  if (nb == 0) {
+    std::fill(x.begin(), x.end(), 0.0);
+    return {true, 0, 0.0, ""};
+  }
+  Vector r(n), z(n), p(n), q(n);
+  spmv<double, double, double>(A, std::span<const double>(x.data(), n), q);
+  for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - q[i];
+  M.apply(r, z);
+  p = z;
+  double rz = dot(c(r), c(z));
+  int it = 0;
+  std::string reason;
+  while (true) {
+    double res = std::sqrt(dot(c(r), c(r))) / nb;
+    if (!std::isfinite(res)) {
+      reason = "residual became non-finite at iteration " + std::to_string(it);
+      break;
+    }
+    if (res <= o.tolerance) break;
+    if (it >= o.max_iterations) {
+      reason = "maximum iterations (" + std::to_string(o.max_iterations) + ") reached";
+      break;
+    }
+    spmv<double, double, double>(A, c(p), q);
+    double pq = dot(c(p), c(q));
+    if (!(pq > 0)) {
+      reason = "breakdown at iteration " + std::to_string(it) + ": p.Ap = " + std::to_string(pq) +
+               " (matrix not symmetric positive definite?)";
+      break;
+    }
+    double alpha = rz / pq;
+    axpy<double>(alpha, c(p), x);
+    axpy<double>(-alpha, c(q), r);
+    M.apply(r, z);
+    double rz_new = dot(c(r), c(z));
+    xpby<double>(c(z), rz_new / rz, p);
+    rz = rz_new;
+    ++it;
+  }
+  return finish(A, b, x, it, o.tolerance, reason);
+}
+
+SolveStatus bicgstab(const CsrMatrix<double>& A, std::span<const double> b, std::span<double> x,
+                     const Preconditioner& M, const SolveOptions& o) {
+  if (auto s = check_input(A, b, x); !s.reason.empty()) return s;
+  const std::size_t n = A.rows;
+  const double nb = std::sqrt(dot(b, b));
+  if (nb == 0) {
+    std::fill(x.begin(), x.end(), 0.0);
+    return {true, 0, 0.0, ""};
+  }
+  Vector r(n), r0(n), p(n, 0.0), v(n, 0.0), s(n), t(n), y(n), zv(n);
+  spmv<double, double, double>(A, std::span<const double>(x.data(), n), t);
+  for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - t[i];
+  r0 = r;
+  double rho = 1, alpha = 1, omega = 1;
+  int it = 0;
+  std::string reason;
+  auto tiny = [](double v) { return !(std::abs(v) > 1e-300) || !std::isfinite(v); };
+  while (true) {
+    double res = std::sqrt(dot(c(r), c(r))) / nb;
+    if (!std::isfinite(res)) {
+      reason = "residual became non-finite at iteration " + std::to_string(it);
+      break;
+    }
+    if (res <= o.tolerance) break;
+    if (it >= o.max_iterations) {
+      reason = "maximum iterations (" + std::to_string(o.max_iterations) + ") reached";
+      break;
+    }
+    double rho_new = dot(c(r0), c(r));
+    if (tiny(rho_new)) {
+      reason = "breakdown at iteration " + std::to_string(it) + ": rho = 0";
+      break;
+    }
+    double beta = (rho_new / rho) * (alpha / omega);
+    rho = rho_new;
+    for (std::size_t i = 0; i < n; ++i) p[i] = r[i] + beta * (p[i] - omega * v[i]);
+    M.apply(p, y);
+    spmv<double, double, double>(A, c(y), v);
+    double r0v = dot(c(r0), c(v));
+    if (tiny(r0v)) {
+      reason = "breakdown at iteration " + std::to_string(it) + ": r0.v = 0";
+      break;
+    }
+    alpha = rho / r0v;
+    for (std::size_t i = 0; i < n; ++i) s[i] = r[i] - alpha * v[i];
+    axpy<double>(alpha, c(y), x);
+    if (std::sqrt(dot(c(s), c(s))) / nb <= o.tolerance) {
+      r = s;
+      ++it;
+      continue;
+    }
+    M.apply(s, zv);
+    spmv<double, double, double>(A, c(zv), t);
+    double tt = dot(c(t), c(t));
+    omega = tt > 0 ? dot(c(t), c(s)) / tt : 0.0;
+    if (tiny(omega)) {
+      reason = "breakdown at iteration " + std::to_string(it) + ": omega = 0";
+      break;
+    }
+    axpy<double>(omega, c(zv), x);
+    for (std::size_t i = 0; i < n; ++i) r[i] = s[i] - omega * t[i];
+    ++it;
+  }
+  return finish(A, b, x, it, o.tolerance, reason);
+}
+
+}  // namespace ryushi::solvers
