@@ -1,0 +1,89 @@
+// Bucket-based multigrid on the Poisson benchmark of the multigrid paper (section 5(1)).
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "solvers/bucket_multigrid.hpp"
+#include "solvers/krylov.hpp"
+#include "verification/poisson_benchmark.hpp"
+
+using namespace ryushi;
+using namespace ryushi::solvers;
+
+namespace {
+
+struct Run {
+  SolveStatus status;
+  std::vector<double> x;
+  double error;  // relative L2 error against the exact solution
+};
+
+Run solve(const PoissonProblem& P, const Preconditioner& M, double tol = 1e-8, bool bicg = false) {
+  Run r{{}, std::vector<double>(P.b.size(), 0.0), 0};
+  r.status = bicg ? bicgstab(P.A, P.b, r.x, M, {tol, 5000}) : conjugate_gradient(P.A, P.b, r.x, M, {tol, 5000});
+  double num = 0, den = 0;
+  for (std::size_t i = 0; i < r.x.size(); ++i) {
+    num += (r.x[i] - P.exact[i]) * (r.x[i] - P.exact[i]);
+    den += P.exact[i] * P.exact[i];
+  }
+  r.error = std::sqrt(num / den);
+  return r;
+}
+
+MultigridOptions sw_cycle(bool single = true) {
+  MultigridOptions o;
+  o.cycle = MultigridOptions::Cycle::W;
+  o.scale_correction = true;
+  o.single_precision = single;
+  return o;
+}
+
+int mgcg_iterations(int dim, int n, const MultigridOptions& o) {
+  auto P = mps_poisson_problem(dim, n);
+  BucketMultigrid mg(P.A, P.coordinates, dim, P.influence_radius, o);
+  auto r = solve(P, mg);
+  REQUIRE(r.status.converged);
+  return r.status.iterations;
+}
+
+}  // namespace
+
+TEST_CASE("multigrid: MGCG and DCG agree, and the error against the exact solution shrinks with resolution") {
+  double previous = 1e9;
+  for (int n : {32, 64, 128}) {
+    auto P = mps_poisson_problem(2, n);
+    BucketMultigrid mg(P.A, P.coordinates, 2, P.influence_radius, sw_cycle());
+    auto a = solve(P, mg, 1e-10);
+    auto b = solve(P, JacobiPreconditioner(P.A), 1e-10);
+    REQUIRE(a.status.converged);
+    REQUIRE(b.status.converged);
+    double diff = 0, norm = 0;
+    for (std::size_t i = 0; i < a.x.size(); ++i) {
+      diff = std::max(diff, std::abs(a.x[i] - b.x[i]));
+      norm = std::max(norm, std::abs(b.x[i]));
+    }
+    MESSAGE("n = ", n, ": MGCG ", a.status.iterations, " it, DCG ", b.status.iterations, " it, error ", a.error,
+            ", max |x_mg - x_dcg| / max|x| ", diff / norm);
+    CHECK(diff / norm < 1e-7);
+    CHECK(a.error < previous);
+    previous = a.error;
+  }
+}
+
+TEST_CASE("multigrid: S-W cycle iteration counts barely grow with N (2D 64^2 -> 512^2, 3D 16^3 -> 48^3)") {
+  int small2 = mgcg_iterations(2, 64, sw_cycle()), large2 = mgcg_iterations(2, 512, sw_cycle());
+  int small3 = mgcg_iterations(3, 16, sw_cycle()), large3 = mgcg_iterations(3, 48, sw_cycle());
+  MESSAGE("2D: ", small2, " -> ", large2, " iterations; 3D: ", small3, " -> ", large3);
+  CHECK(large2 <= 1.3 * small2);
+  CHECK(large3 <= 1.3 * small3);
+}
+
+TEST_CASE("multigrid: a float preconditioner still takes double CG to a relative residual of 1e-12") {
+  auto P = mps_poisson_problem(2, 128);
+  BucketMultigrid mg(P.A, P.coordinates, 2, P.influence_radius, sw_cycle(true));
+  auto r = solve(P, mg, 1e-12);
+  MESSAGE("mixed precision: ", r.status.iterations, " iterations, relres ", r.status.relative_residual);
+  CHECK(r.status.converged);
+  CHECK(r.status.relative_residual <= 1e-12);
+}
