@@ -87,3 +87,33 @@ TEST_CASE("multigrid: a float preconditioner still takes double CG to a relative
   CHECK(r.status.converged);
   CHECK(r.status.relative_residual <= 1e-12);
 }
+
+#include "solvers/matrix_market.hpp"
+#include "test_util.hpp"
+
+TEST_CASE("solve command: Matrix Market round trip, one result line, documented exit codes") {
+  auto dir = test::scratch("solve_command");
+  std::filesystem::create_directories(dir);
+  auto P = mps_poisson_problem(2, 48);
+  write_matrix_market((dir / "A.mtx").string(), P.A);
+  write_values((dir / "b.txt").string(), P.b);
+  write_values((dir / "x.txt").string(), P.coordinates, 2);
+  auto back = read_matrix_market((dir / "A.mtx").string());
+  CHECK(back.val == P.A.val);  // 17 significant digits: exact round trip
+  CHECK(back.col == P.A.col);
+
+  std::string bin = RYUSHI_BINARY, files = (dir / "A.mtx").string() + " --rhs " + (dir / "b.txt").string();
+  auto mg = test::run_command(bin + " solve " + files + " --coords " + (dir / "x.txt").string() + " --cycle sw --precision mixed");
+  CHECK(mg.code == 0);
+  CHECK(mg.output.rfind("setup_s=", 0) == 0);
+  CHECK(mg.output.find(" iters=") != std::string::npos);
+  CHECK(mg.output.find(" relres=") != std::string::npos);
+  CHECK(test::run_command(bin + " solve " + files + " --preconditioner jacobi --krylov bicgstab").code == 0);
+  auto capped = test::run_command(bin + " solve " + files + " --preconditioner jacobi --max-iterations 3");
+  CHECK(capped.code == 3);
+  CHECK(capped.output.find("maximum iterations (3) reached") != std::string::npos);
+  test::write_text(dir / "bad.mtx", "%%MatrixMarket matrix coordinate real general\n2 2 1\n3 1 1.0\n");
+  auto bad = test::run_command(bin + " solve " + (dir / "bad.mtx").string() + " --rhs " + (dir / "b.txt").string());
+  CHECK(bad.code == 2);
+  CHECK(bad.output.find("bad.mtx:3: index outside the 2 x 2 matrix") != std::string::npos);
+}

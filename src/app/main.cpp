@@ -6,6 +6,7 @@
 
 #include "app/exit_codes.hpp"
 #include "app/run.hpp"
+#include "app/solve.hpp"
 #include "scene/schema.hpp"
 #include "verification/free_surface_check.hpp"
 #include "verification/patch_test.hpp"
@@ -57,6 +58,21 @@ int main(int argc, char** argv) {
   fs_cmd->add_option("--seed", fs_seed, "Seed of the disorder");
   fs_cmd->add_option("--beta", fs_beta, "MPS threshold n < beta n0")->check(CLI::Range(0.1, 1.0));
 
+  SolveCommandOptions solve;
+  auto* solve_cmd = app.add_subcommand("solve", "Solve an exported linear system (Matrix Market) and time it.");
+  solve_cmd->add_option("matrix", solve.matrix, "A.mtx")->required();
+  solve_cmd->add_option("--rhs", solve.rhs, "b.txt, one value per line")->required();
+  solve_cmd->add_option("--coords", solve.coords, "x.txt, D values per line (needed by multigrid)");
+  solve_cmd->add_option("--krylov", solve.krylov, "cg or bicgstab")->check(CLI::IsMember({"cg", "bicgstab"}));
+  solve_cmd->add_option("--preconditioner", solve.preconditioner, "none, jacobi or multigrid")
+      ->check(CLI::IsMember({"none", "jacobi", "multigrid"}));
+  solve_cmd->add_option("--cycle", solve.cycle, "v, w or sw (scale-corrected W)")->check(CLI::IsMember({"v", "w", "sw"}));
+  solve_cmd->add_option("--precision", solve.precision, "double or mixed (float preconditioner)")
+      ->check(CLI::IsMember({"double", "mixed"}));
+  solve_cmd->add_option("--tol", solve.tolerance, "Relative residual |b - Ax|/|b|")->check(CLI::PositiveNumber);
+  solve_cmd->add_option("--max-iterations", solve.max_iterations, "Iteration cap")->check(CLI::PositiveNumber);
+  solve_cmd->add_option("--bucket-width", solve.bucket_width, "Level-1 bucket width (default: longest coupling)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -100,6 +116,7 @@ int main(int argc, char** argv) {
     }
     return kExitDone;
   }
+  if (*solve_cmd) return solve_command(solve);
   if (*keys_cmd) {
     std::printf("%s", schema_markdown().c_str());
     return kExitDone;
