@@ -45,6 +45,22 @@ SolveStatus finish(const CsrMatrix<double>& A, std::span<const double> b, std::s
   return s;
 }
 
+// The common stopping test: converged, non-finite residual or the iteration cap. Sets `reason`
+// when the iteration stops without converging.
+bool should_stop(const Vector& r, double nb, int it, const SolveOptions& o, std::string& reason) {
+  double res = std::sqrt(dot(c(r), c(r))) / nb;
+  if (!std::isfinite(res)) {
+    reason = "residual became non-finite at iteration " + std::to_string(it);
+    return true;
+  }
+  if (res <= o.tolerance) return true;
+  if (it >= o.max_iterations) {
+    reason = "maximum iterations (" + std::to_string(o.max_iterations) + ") reached";
+    return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 void IdentityPreconditioner::apply(std::span<const double> r, std::span<double> z) const {
@@ -85,16 +101,7 @@ SolveStatus conjugate_gradient(const CsrMatrix<double>& A, std::span<const doubl
   int it = 0;
   std::string reason;
   while (true) {
-    double res = std::sqrt(dot(c(r), c(r))) / nb;
-    if (!std::isfinite(res)) {
-      reason = "residual became non-finite at iteration " + std::to_string(it);
-      break;
-    }
-    if (res <= o.tolerance) break;
-    if (it >= o.max_iterations) {
-      reason = "maximum iterations (" + std::to_string(o.max_iterations) + ") reached";
-      break;
-    }
+    if (should_stop(r, nb, it, o, reason)) break;
     spmv<double, double, double>(A, c(p), q);
     double pq = dot(c(p), c(q));
     if (!(pq > 0)) {
@@ -132,16 +139,7 @@ SolveStatus bicgstab(const CsrMatrix<double>& A, std::span<const double> b, std:
   std::string reason;
   auto tiny = [](double v) { return !(std::abs(v) > 1e-300) || !std::isfinite(v); };
   while (true) {
-    double res = std::sqrt(dot(c(r), c(r))) / nb;
-    if (!std::isfinite(res)) {
-      reason = "residual became non-finite at iteration " + std::to_string(it);
-      break;
-    }
-    if (res <= o.tolerance) break;
-    if (it >= o.max_iterations) {
-      reason = "maximum iterations (" + std::to_string(o.max_iterations) + ") reached";
-      break;
-    }
+    if (should_stop(r, nb, it, o, reason)) break;
     double rho_new = dot(c(r0), c(r));
     if (tiny(rho_new)) {
       reason = "breakdown at iteration " + std::to_string(it) + ": rho = 0";
