@@ -1,6 +1,7 @@
 #include "solvers/krylov.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include "solvers/vector_ops.hpp"
 
@@ -45,6 +46,22 @@ SolveStatus finish(const CsrMatrix<double>& A, std::span<const double> b, std::s
   return s;
 }
 
+// Validates the input and forms r = b - A x and |b|. Returns a final status when there is
+// nothing to iterate on: bad input, or b = 0, whose solution is x = 0.
+std::optional<SolveStatus> start(const CsrMatrix<double>& A, std::span<const double> b, std::span<double> x,
+                                 Vector& r, double& nb) {
+  if (auto s = check_input(A, b, x); !s.reason.empty()) return s;
+  nb = std::sqrt(dot(b, b));
+  if (nb == 0) {
+    std::fill(x.begin(), x.end(), 0.0);
+    return SolveStatus{true, 0, 0.0, ""};
+  }
+  r.resize(A.rows);
+  spmv<double, double, double>(A, std::span<const double>(x.data(), x.size()), r);
+  for (std::size_t i = 0; i < r.size(); ++i) r[i] = b[i] - r[i];
+  return std::nullopt;
+}
+
 // The common stopping test: converged, non-finite residual or the iteration cap. Sets `reason`
 // when the iteration stops without converging.
 bool should_stop(const Vector& r, double nb, int it, const SolveOptions& o, std::string& reason) {
@@ -85,16 +102,11 @@ void JacobiPreconditioner::apply(std::span<const double> r, std::span<double> z)
 
 SolveStatus conjugate_gradient(const CsrMatrix<double>& A, std::span<const double> b, std::span<double> x,
                                const Preconditioner& M, const SolveOptions& o) {
-  if (auto s = check_input(A, b, x); !s.reason.empty()) return s;
+  Vector r;
+  double nb = 0;
+  if (auto done = start(A, b, x, r, nb)) return *done;
   const std::size_t n = A.rows;
-  const double nb = std::sqrt(dot(b, b));
-  if (nb == 0) {
-    std::fill(x.begin(), x.end(), 0.0);
-    return {true, 0, 0.0, ""};
-  }
-  Vector r(n), z(n), p(n), q(n);
-  spmv<double, double, double>(A, std::span<const double>(x.data(), n), q);
-  for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - q[i];
+  Vector z(n), p(n), q(n);
   M.apply(r, z);
   p = z;
   double rz = dot(c(r), c(z));
@@ -123,17 +135,11 @@ SolveStatus conjugate_gradient(const CsrMatrix<double>& A, std::span<const doubl
 
 SolveStatus bicgstab(const CsrMatrix<double>& A, std::span<const double> b, std::span<double> x,
                      const Preconditioner& M, const SolveOptions& o) {
-  if (auto s = check_input(A, b, x); !s.reason.empty()) return s;
+  Vector r;
+  double nb = 0;
+  if (auto done = start(A, b, x, r, nb)) return *done;
   const std::size_t n = A.rows;
-  const double nb = std::sqrt(dot(b, b));
-  if (nb == 0) {
-    std::fill(x.begin(), x.end(), 0.0);
-    return {true, 0, 0.0, ""};
-  }
-  Vector r(n), r0(n), p(n, 0.0), v(n, 0.0), s(n), t(n), y(n), zv(n);
-  spmv<double, double, double>(A, std::span<const double>(x.data(), n), t);
-  for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - t[i];
-  r0 = r;
+  Vector r0 = r, p(n, 0.0), v(n, 0.0), s(n), t(n), y(n), zv(n);
   double rho = 1, alpha = 1, omega = 1;
   int it = 0;
   std::string reason;
