@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "ecs/lattice.hpp"
 #include "methods/system_registry.hpp"
 #include "systems/boundary/adami_wall.hpp"
 #include "systems/fluid/continuity_delta_sph.hpp"
@@ -39,23 +40,6 @@ WcsphParameters<D> wcsph_parameters(const Scene& s) {
 
 namespace {
 
-// Calls f(point) for every lattice point min + (k + 1/2) d, k in [lo_k, hi_k) per axis.
-template <int D, class F>
-void for_lattice(const Vec<D>& origin, double d, const std::array<long, D>& lo, const std::array<long, D>& hi, F&& f) {
-  std::array<long, D> k = lo;
-  while (true) {
-    Vec<D> x;
-    for (int a = 0; a < D; ++a) x[a] = origin[a] + (k[a] + 0.5) * d;
-    f(x);
-    int a = 0;
-    while (a < D && ++k[a] == hi[a]) {
-      k[a] = lo[a];
-      ++a;
-    }
-    if (a == D) break;
-  }
-}
-
 template <int D>
 Vec<D> to_vec(const std::vector<double>& v) {
   Vec<D> x;
@@ -76,7 +60,7 @@ void populate_world(const Scene& s, const WcsphParameters<D>& p, World<D>& world
     std::array<long, D> from{}, to{};
     for (int a = 0; a < D; ++a) to[a] = std::lround((b.max[a] - b.min[a]) / d);
     double top = b.min[D - 1] + to[D - 1] * d;
-    for_lattice<D>(lo, d, from, to, [&](const Vec<D>& x) {
+    for_each_lattice_point<D>(lo, d, from, to, [&](const Vec<D>& x) {
       points.push_back(x);
       depth.push_back(top - x[D - 1]);
     });
@@ -104,7 +88,7 @@ void populate_world(const Scene& s, const WcsphParameters<D>& p, World<D>& world
       from[a] = -w.layers;
       to[a] = std::lround((w.max[a] - w.min[a]) / d) + ((a == D - 1 && w.open_top) ? 0 : w.layers);
     }
-    for_lattice<D>(lo, d, from, to, [&](const Vec<D>& q) {
+    for_each_lattice_point<D>(lo, d, from, to, [&](const Vec<D>& q) {
       bool inside = true;
       for (int a = 0; a < D; ++a) inside = inside && q[a] > lo[a] && q[a] < hi[a];
       if (!inside) wall.push_back(q);

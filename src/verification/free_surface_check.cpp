@@ -6,6 +6,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "ecs/lattice.hpp"
 #include "systems/free_surface/free_surface_detection.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
 
@@ -31,17 +32,11 @@ FreeSurfaceScore score(const std::string& shape, const std::function<Site(const 
   std::mt19937 rng(seed);
   std::normal_distribution<double> normal(0, 1);
   std::uniform_real_distribution<double> uniform(0, 1);
-  long total = 1;
-  for (int a = 0; a < D; ++a) total *= n;
-  for (long k = 0; k < total; ++k) {
-    Vec<D> p;
-    long rest = k;
-    for (int a = 0; a < D; ++a) {
-      p[a] = -0.2 + (rest % n + 0.5) * d;
-      rest /= n;
-    }
+  std::array<long, D> lo{}, hi;
+  hi.fill(n);
+  for_each_lattice_point<D>(Vec<D>::Constant(-0.2), d, lo, hi, [&](Vec<D> p) {
     Site s = site(p);
-    if (s == kEmpty) continue;
+    if (s == kEmpty) return;
     // 2: an axial lattice neighbour is empty (outer layer); 1: only a diagonal one (a corner of
     // a staircase boundary, not scored); 0: none (interior).
     char edge = 0;
@@ -64,7 +59,7 @@ FreeSurfaceScore score(const std::string& shape, const std::function<Site(const 
     x.push_back(p);
     kind.push_back(s == kFluidSite ? kFluid : kWall);
     outer.push_back(edge);
-  }
+  });
   std::vector<double> volume(x.size(), std::pow(d, D));
   // SPH rules use Wendland C2 at h = 1.5 d; the MPS rule its own weight with r_e = 2.1 l0, the
   // radius its beta = 0.97 was set for (Koshizuka & Oka 1996).

@@ -8,6 +8,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "ecs/lattice.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
 #include "systems/operators/divergence.hpp"
 #include "systems/operators/gradient.hpp"
@@ -104,23 +105,16 @@ PatchTestRow run_one(const PatchTestOptions& o, double d) {
   std::normal_distribution<double> normal(0.0, 1.0);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::vector<Vec<D>> x;
-  long total = 1;
-  for (int a = 0; a < D; ++a) total *= n;
-  x.reserve(total);
-  for (long k = 0; k < total; ++k) {
-    Vec<D> p;
-    long rest = k;
-    for (int a = 0; a < D; ++a) {
-      p[a] = (rest % n + 0.5) * d;
-      rest /= n;
-    }
+  std::array<long, D> lo{}, hi;
+  hi.fill(n);
+  for_each_lattice_point<D>(Vec<D>::Zero(), d, lo, hi, [&](Vec<D> p) {
     if (o.disorder > 0) {  // a random direction, a length uniform in [0, disorder d]
       Vec<D> dir;
       for (int a = 0; a < D; ++a) dir[a] = normal(rng);
       p += dir.normalized() * (o.disorder * d * uniform(rng));
     }
     x.push_back(p);
-  }
+  });
   std::vector<double> volume(x.size(), std::pow(d, D)), f(x.size());
   std::vector<Vec<D>> u(x.size());
   std::vector<FrankeValue<D>> exact(x.size());

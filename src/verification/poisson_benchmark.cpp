@@ -5,6 +5,7 @@
 #include <random>
 #include <tuple>
 
+#include "ecs/lattice.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
 #include "systems/operators/mps_reference.hpp"
 
@@ -25,10 +26,10 @@ PoissonProblem build(int n, unsigned seed, double jitter) {
   std::uniform_real_distribution<double> u(-jitter * l0, jitter * l0);
   std::vector<Vec<D>> x;
   std::vector<char> unknown;
-  const int lo = -2, hi = n + 2;  // two Dirichlet layers on every side
-  std::array<int, D> k;
-  k.fill(lo);
-  while (true) {
+  std::array<long, D> lo, hi;  // two Dirichlet layers on every side
+  lo.fill(-2);
+  hi.fill(n + 2);
+  for_each_lattice_index<D>(lo, hi, [&](const std::array<long, D>& k) {
     bool inside = true;
     Vec<D> p;
     for (int a = 0; a < D; ++a) {
@@ -38,10 +39,7 @@ PoissonProblem build(int n, unsigned seed, double jitter) {
     for (int a = 0; a < D; ++a) p[a] += u(rng);
     x.push_back(p);
     unknown.push_back(inside);
-    int a = 0;
-    while (a < D && ++k[a] == hi) k[a++] = lo;
-    if (a == D) break;
-  }
+  });
   Kernel<D> w(KernelType::Mps, re);
   auto ref = mps_reference<D>(w, l0);
   const double coeff = 2.0 * D / (ref.lambda0 * ref.n0);
