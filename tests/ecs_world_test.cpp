@@ -1,7 +1,7 @@
 #include <doctest/doctest.h>
 
 #include "ecs/world.hpp"
-#include "methods/wcsph.hpp"
+#include "methods/method.hpp"
 #include "ecs/scheduler.hpp"
 #include "test_util.hpp"
 
@@ -64,9 +64,8 @@ std::vector<std::string> columns_of(const std::string& scene_text) {
   World<D> world;
   Resources res;
   Profiler prof;
-  auto p = wcsph_parameters<D>(s);
-  populate_world<D>(s, p, world);
-  Scheduler<D> sched(wcsph_pipeline<D>(s, p), world, res, prof);
+  auto method = build_method<D>(s, world);
+  Scheduler<D> sched(std::move(method.pipeline), world, res, prof);
   sched.initialise();
   return world.column_names();
 }
@@ -94,4 +93,14 @@ TEST_CASE("world: a scene pays only for what it models") {
 
   auto no_delta = columns_of<2>(kSceneBase + "[method]\ndelta = 0.0\n");
   CHECK_FALSE(contains(no_delta, "density_gradient"));
+
+  // Each method allocates its own columns only.
+  CHECK_FALSE(contains(plain, "number_density"));
+  CHECK_FALSE(contains(plain, "pressure_role"));
+  auto mps = columns_of<2>(kSceneBase + "[method]\nname = \"mps\"\n");
+  CHECK(contains(mps, "number_density"));
+  CHECK(contains(mps, "pressure_gradient"));
+  CHECK_FALSE(contains(mps, "density_rate"));
+  CHECK_FALSE(contains(mps, "position_start"));
+  CHECK_FALSE(contains(mps, "density_gradient"));
 }

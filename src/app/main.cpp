@@ -26,6 +26,10 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--set", run.sets, "Override a scene key: section.key=value (repeatable)");
   run_cmd->add_flag("--trace", run.trace, "Write trace.json (Chrome trace events, opens in Perfetto)");
   run_cmd->add_flag("--quiet", run.quiet, "No progress output and no profile table");
+  run_cmd->add_option("--dump-matrix", run.dump_matrix_dir,
+                      "Write the pressure system of one step to DIR: A.mtx, b.txt, x.txt (coordinates), p.txt (solution)");
+  run_cmd->add_option("--dump-step", run.dump_step, "Step (from 0) whose system --dump-matrix writes (default 0)")
+      ->check(CLI::NonNegativeNumber);
 
   std::string check_path;
   std::vector<std::string> check_sets;

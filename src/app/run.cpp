@@ -16,13 +16,13 @@
 #include "app/progress.hpp"
 #include "ecs/scheduler.hpp"
 #include "io/json.hpp"
-#include "methods/wcsph.hpp"
+#include "methods/method.hpp"
 #include "scene/scene.hpp"
 #include "systems/io/atomic_file.hpp"
 #include "systems/io/hdf5_frame.hpp"
-#include "systems/integrate/time_step.hpp"
 #include "systems/io/xdmf.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
+#include "systems/pressure/pressure_system.hpp"
 #include "systems/probes/probes.hpp"
 
 namespace fs = std::filesystem;
@@ -46,6 +46,8 @@ struct HealthCheck {
   std::size_t index = kNone;
   std::string column, problem;
 
+  bool density_may_vanish = false;
+
   void run(const World<D>& w, const Domain<D>& domain) {
     auto& x = w.column(components::position);
     auto& v = w.column(components::velocity);
@@ -56,7 +58,7 @@ struct HealthCheck {
       if (kind[i] != kFluid) return 0;
       if (!x[i].allFinite()) return 1;
       if (!v[i].allFinite()) return 2;
-      if (!std::isfinite(rho[i]) || rho[i] <= 0) return 3;
+      if (!std::isfinite(rho[i]) || rho[i] < 0 || (rho[i] == 0 && !density_may_vanish)) return 3;
       if (!std::isfinite(p[i])) return 4;
       if (!domain.contains(x[i])) return 5;
       return 0;
@@ -132,11 +134,15 @@ class Runner {
 
   // Everything that can reject the input, before any file is written.
   void prepare() {
-    params_ = wcsph_parameters<D>(scene_);
-    populate_world<D>(scene_, params_, world_);
+    PipelineOptions po{opt_.dump_matrix_dir, opt_.dump_step};
+    auto method = build_method<D>(scene_, world_, po);
+    params_ = method.physics;
+    method_summary_ = method.summary;
+    density_may_vanish_ = method.density_may_vanish;
     res_.ensure(domain_resource<D>) = params_.domain;
     res_.ensure(resources::time) = 0.0;
-    scheduler_ = std::make_unique<Scheduler<D>>(wcsph_pipeline<D>(scene_, params_), world_, res_, profiler_);
+    res_.ensure(resources::step) = 0;
+    scheduler_ = std::make_unique<Scheduler<D>>(std::move(method.pipeline), world_, res_, profiler_);
     scheduler_->initialise();
     for (auto& f : scene_.output_fields)
       if (!world_.has(f)) {
@@ -145,14 +151,9 @@ class Runner {
         throw SceneError(scene_.path + ": [output] fields: no per-particle field '" + f +
                          "' in this pipeline; available: " + list);
       }
-    if (scene_.fixed_dt > 0) {
-      res_.ensure(resources::dt) = scene_.fixed_dt;
-    } else {
-      double g = params_.gravity.norm();
-      TimeStepControl<D> control(params_, scene_.cfl);
-      res_.ensure(resources::dt) = control.limit(0.0, g);
-    }
+    res_.ensure(resources::dt) = scene_.fixed_dt > 0 ? scene_.fixed_dt : method.first_dt;
     HealthCheck<D> h;
+    h.density_may_vanish = density_may_vanish_;
     h.run(world_, params_.domain);
     if (h.index != HealthCheck<D>::kNone)
       throw SceneError(scene_.path + ": the initial state is invalid: particle id " +
@@ -172,9 +173,8 @@ class Runner {
     slot_reorder_ = profiler_.slot("reorder_by_cell");
     slot_health_ = profiler_.slot("health_check");
     if (!opt_.quiet) {
-      spdlog::info("{}: {}D {}, {} fluid + {} wall particles, h = {:.4g} m, c0 = {:.4g} m/s -> {}",
-                   scene_.name, D, scene_.method, initial_.fluid, initial_.walls, params_.kernel.h(),
-                   params_.c0, out_.string());
+      spdlog::info("{}: {}D {}, {} fluid + {} wall particles, {} -> {}", scene_.name, D, scene_.method,
+                   initial_.fluid, initial_.walls, method_summary_, out_.string());
     }
 
     std::string status = "completed", message;
@@ -231,8 +231,15 @@ class Runner {
       throw NumericalFailure("step " + std::to_string(step_) + " (t = " + fmt(time_) + " s): time step " +
                              fmt(dt) + " s fell below time.dt_min = " + fmt(scene_.dt_min) +
                              " s (system 'time_step_control')");
-    dt = std::min(dt, scene_.end_time - time_);
+    // Land on time.end without a sliver of a last step: when less than two steps remain, split
+    // the rest evenly (MPS's pressure source scales as 1/dt^2, so a tiny step is a spike).
+    const double rest = scene_.end_time - time_;
+    if (dt >= rest)
+      dt = rest;
+    else if (2 * dt > rest)
+      dt = 0.5 * rest;
     dt_used_ = dt;
+    res_.get(resources::step) = step_;
     auto begin = std::chrono::steady_clock::now();
     try {
       scheduler_->step();
@@ -247,6 +254,7 @@ class Runner {
     ++step_;
     Profiler::Scope t(profiler_, slot_health_);
     HealthCheck<D> h;
+    h.density_may_vanish = density_may_vanish_;
     h.run(world_, params_.domain);
     if (h.index != HealthCheck<D>::kNone) {
       auto& x = world_.column(components::position)[h.index];
@@ -332,6 +340,22 @@ class Runner {
     w.key("max_speed").value(now.max_speed);
     w.key("max_density_deviation").value(now.max_density_deviation);
     w.end_object();
+    if (res_.has(solve_statistics_resource.name)) {
+      const auto& st = res_.get(solve_statistics_resource);
+      w.key("linear_solver").begin_object();
+      w.key("krylov").value(scene_.solver.krylov);
+      w.key("preconditioner").value(scene_.solver.preconditioner);
+      w.key("cycle").value(scene_.solver.cycle);
+      w.key("precision").value(scene_.solver.precision);
+      w.key("tolerance").value(scene_.solver.tolerance);
+      w.key("solves").value(static_cast<std::int64_t>(st.solves));
+      w.key("mean_iterations").value(st.solves ? double(st.iterations) / st.solves : 0.0);
+      w.key("max_iterations").value(static_cast<std::int64_t>(st.max_iterations));
+      w.key("max_relative_residual").value(st.max_relative_residual);
+      w.key("max_unknowns").value(static_cast<std::int64_t>(st.max_rows));
+      w.key("max_nonzeros").value(static_cast<std::int64_t>(st.max_nonzeros));
+      w.end_object();
+    }
     w.end_object();
     write_text_atomic(out_ / "summary.json", w.str());
   }
@@ -349,6 +373,8 @@ class Runner {
   World<D> world_;
   Resources res_;
   std::unique_ptr<Scheduler<D>> scheduler_;
+  std::string method_summary_;
+  bool density_may_vanish_ = false;
   fs::path out_;
   std::vector<FrameRecord> frames_;
   std::vector<std::vector<double>> probe_rows_;
@@ -409,9 +435,8 @@ int check_scene(const std::string& path, const std::vector<std::string>& sets) {
       World<D> world;
       Resources res;
       Profiler profiler;
-      auto p = wcsph_parameters<D>(scene);
-      populate_world<D>(scene, p, world);
-      Scheduler<D> s(wcsph_pipeline<D>(scene, p), world, res, profiler);
+      auto method = build_method<D>(scene, world);
+      Scheduler<D> s(std::move(method.pipeline), world, res, profiler);
       std::printf("%s: OK (%dD %s, %zu particles, %zu systems in the step graph)\n", path.c_str(), D,
                   scene.method.c_str(), world.size(), s.pipeline().size());
     };

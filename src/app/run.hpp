@@ -14,6 +14,8 @@ struct RunOptions {
   std::vector<std::string> sets;
   bool trace = false;
   bool quiet = false;
+  std::string dump_matrix_dir;  // write the pressure system of step dump_step here (implicit methods)
+  long long dump_step = 0;
 };
 
 // Runs a scene; returns the exit code (app/exit_codes.hpp). Messages go to stderr/stdout.

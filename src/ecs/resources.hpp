@@ -55,6 +55,7 @@ class Resources {
 namespace resources {
 inline constexpr Resource<double> dt{"dt"};
 inline constexpr Resource<double> time{"time"};
+inline constexpr Resource<long long> step{"step"};  // steps completed before this one
 }  // namespace resources
 
 }  // namespace ryushi

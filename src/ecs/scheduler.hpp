@@ -9,6 +9,8 @@
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "ecs/profiler.hpp"
@@ -107,12 +109,21 @@ class Scheduler {
     try {
       SystemContext<D> ctx(world_, res_, accesses_[i], names_[i]);
       pipeline_[i]->run(ctx);
+    } catch (const AccessViolation&) {
+      fail(std::current_exception());
+    } catch (const std::exception& e) {
+      // Name the system, so a numerical failure report says where it happened.
+      fail(std::make_exception_ptr(std::runtime_error("system '" + names_[i] + "': " + e.what())));
     } catch (...) {
-      std::lock_guard lock(failure_mutex_);
-      if (!failure_) failure_ = std::current_exception();
-      failed_ = true;
+      fail(std::current_exception());
     }
     profiler_.record(slots_[i], begin, Profiler::Clock::now());
+  }
+
+  void fail(std::exception_ptr e) {
+    std::lock_guard lock(failure_mutex_);
+    if (!failure_) failure_ = e;
+    failed_ = true;
   }
 
   std::vector<SystemPtr<D>> pipeline_;

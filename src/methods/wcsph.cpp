@@ -2,8 +2,7 @@
 
 #include <cmath>
 
-#include "ecs/lattice.hpp"
-#include "methods/system_registry.hpp"
+#include "methods/scene_particles.hpp"
 #include "systems/boundary/adami_wall.hpp"
 #include "systems/fluid/continuity_delta_sph.hpp"
 #include "systems/fluid/laminar_viscosity_morris.hpp"
@@ -20,12 +19,8 @@ template <int D>
 WcsphParameters<D> wcsph_parameters(const Scene& s) {
   WcsphParameters<D> p;
   p.kernel = Kernel<D>(kernel_from_name(s.kernel), s.smoothing_length());
-  for (int a = 0; a < D; ++a) {
-    p.domain.min[a] = s.domain_min[a];
-    p.domain.max[a] = s.domain_max[a];
-    p.domain.periodic[a] = s.periodic[a];
-    p.gravity[a] = s.gravity[a];
-  }
+  p.domain = scene_domain<D>(s);
+  p.gravity = scene_vector<D>(s.gravity);
   p.spacing = s.spacing;
   p.rho0 = s.density;
   p.c0 = s.resolved_sound_speed();
@@ -38,76 +33,39 @@ WcsphParameters<D> wcsph_parameters(const Scene& s) {
   return p;
 }
 
-namespace {
-
-template <int D>
-Vec<D> to_vec(const std::vector<double>& v) {
-  Vec<D> x;
-  for (int a = 0; a < D; ++a) x[a] = v[a];
-  return x;
-}
-
-}  // namespace
-
 template <int D>
 void populate_world(const Scene& s, const WcsphParameters<D>& p, World<D>& world) {
-  const double d = s.spacing, volume = std::pow(d, D);
+  const double volume = std::pow(s.spacing, D);
   const double g_up = -p.gravity[D - 1];  // gravity along the vertical (last) axis
-  std::vector<Vec<D>> points;
-  std::vector<double> depth;
-  for (auto& b : s.fluid) {
-    Vec<D> lo = to_vec<D>(b.min);
-    std::array<long, D> from{}, to{};
-    for (int a = 0; a < D; ++a) to[a] = std::lround((b.max[a] - b.min[a]) / d);
-    double top = b.min[D - 1] + to[D - 1] * d;
-    for_each_lattice_point<D>(lo, d, from, to, [&](const Vec<D>& x) {
-      points.push_back(x);
-      depth.push_back(top - x[D - 1]);
-    });
-  }
-  std::size_t first = world.append(points.size(), kFluid);
+  auto particles = scene_particles<D>(s);
+  std::size_t first = world.append(particles.fluid.size(), kFluid);
   auto& x = world.ensure(components::position);
   auto& m = world.ensure(components::mass);
   auto& rho = world.ensure(components::density);
   auto& pr = world.ensure(components::pressure);
   world.ensure(components::velocity);
-  for (std::size_t k = 0; k < points.size(); ++k) {
+  for (std::size_t k = 0; k < particles.fluid.size(); ++k) {
     std::size_t i = first + k;
-    x[i] = points[k];
-    double pressure = s.hydrostatic_init ? p.rho0 * g_up * depth[k] : 0.0;
+    x[i] = particles.fluid[k];
+    double pressure = s.hydrostatic_init ? p.rho0 * g_up * particles.depth[k] : 0.0;
     rho[i] = p.density(pressure);
     pr[i] = p.pressure(rho[i]);
     m[i] = rho[i] * volume;  // the lattice volume d^D holds the (compressed) fluid
   }
-
-  for (auto& w : s.walls) {
-    std::vector<Vec<D>> wall;
-    Vec<D> lo = to_vec<D>(w.min), hi = to_vec<D>(w.max);
-    std::array<long, D> from{}, to{};
-    for (int a = 0; a < D; ++a) {
-      from[a] = -w.layers;
-      to[a] = std::lround((w.max[a] - w.min[a]) / d) + ((a == D - 1 && w.open_top) ? 0 : w.layers);
-    }
-    for_each_lattice_point<D>(lo, d, from, to, [&](const Vec<D>& q) {
-      bool inside = true;
-      for (int a = 0; a < D; ++a) inside = inside && q[a] > lo[a] && q[a] < hi[a];
-      if (!inside) wall.push_back(q);
-    });
-    std::size_t wfirst = world.append(wall.size(), kWall);
-    auto& xw = world.column(components::position);
-    auto& mw = world.column(components::mass);
-    auto& rw = world.column(components::density);
-    for (std::size_t k = 0; k < wall.size(); ++k) {
-      xw[wfirst + k] = wall[k];
-      mw[wfirst + k] = p.rho0 * volume;
-      rw[wfirst + k] = p.rho0;
-    }
+  std::size_t wfirst = world.append(particles.wall.size(), kWall);
+  auto& xw = world.column(components::position);
+  auto& mw = world.column(components::mass);
+  auto& rw = world.column(components::density);
+  for (std::size_t k = 0; k < particles.wall.size(); ++k) {
+    xw[wfirst + k] = particles.wall[k];
+    mw[wfirst + k] = p.rho0 * volume;
+    rw[wfirst + k] = p.rho0;
   }
 }
 
 template <int D>
 std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D>& p) {
-  auto neighbours = std::make_shared<NeighbourSearch<D>>(p.kernel.support(), /*skip_wall_pairs=*/true);
+  auto neighbours = std::make_shared<NeighbourSearch<D>>(p.kernel.support(), kWall);
   auto wall = std::make_shared<AdamiWall<D>>(p);
   auto gradient = std::make_shared<RenormalisedDensityGradient<D>>(p);
   auto continuity = std::make_shared<ContinuityDeltaSph<D>>(p);
@@ -130,7 +88,6 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
   list.push_back(std::make_shared<MidpointCorrector<D>>());
   list.push_back(eos);
   if (s.fixed_dt <= 0) list.push_back(std::make_shared<TimeStepControl<D>>(p, s.cfl));
-  for (auto& extra : s.systems) list.push_back(make_registered_system<D>(extra.name, extra.params, p));
   return list;
 }
 

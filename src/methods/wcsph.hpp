@@ -19,7 +19,7 @@ void populate_world(const Scene& scene, const WcsphParameters<D>& p, World<D>& w
 
 // neighbour search, then two stages of [wall BC, density gradient, continuity, momentum,
 // viscosity] around the predictor and corrector, the equation of state after each, and the
-// time-step control; the scene's extra [[systems]] are appended and placed by access.
+// time-step control. (build_method appends the scene's [[systems]].)
 template <int D>
 std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& scene, const WcsphParameters<D>& p);
 

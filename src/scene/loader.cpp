@@ -301,8 +301,13 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   if (auto* p = root["domain"]["periodic"].as_array())
     for (int a = 0; a < D; ++a) sc.periodic[a] = *(*p)[a].value<bool>();
   sc.spacing = *get("particles", "spacing").value<double>();
-  sc.smoothing_ratio = *get("particles", "smoothing_ratio").value<double>();
-  sc.kernel = *get("particles", "kernel").value<std::string>();
+  sc.method = *get("method", "name").value<std::string>();
+  const bool mps = sc.method == "mps";
+  sc.smoothing_ratio = root["particles"]["smoothing_ratio"].value_or(mps ? (D == 2 ? 3.1 : 2.1) : 1.5);
+  sc.kernel = root["particles"]["kernel"].value_or(std::string(mps ? "mps" : "wendland_c2"));
+  if (mps && sc.kernel != "mps")
+    val.fail(root["particles"]["kernel"].node(), "particles.kernel",
+             "method 'mps' uses the MPS weight: kernel must be \"mps\" (or left out), not '" + sc.kernel + "'");
   sc.reorder_interval = static_cast<int>(*get("particles", "reorder_interval").value<long long>());
   sc.density = *get("material", "density").value<double>();
   sc.viscosity = *get("material", "viscosity").value<double>();
@@ -312,12 +317,33 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.gravity.assign(D, 0.0);
   sc.gravity[D - 1] = -9.81;
   if (root["physics"]["gravity"]) sc.gravity = vec_of(get("physics", "gravity"));
-  sc.method = *get("method", "name").value<std::string>();
   sc.delta = *get("method", "delta").value<double>();
   sc.alpha = *get("method", "artificial_viscosity").value<double>();
   sc.beta = *get("method", "artificial_viscosity_quadratic").value<double>();
   sc.wall_slip = *get("method", "wall_slip").value<bool>();
   sc.hydrostatic_init = *get("method", "hydrostatic_init").value<bool>();
+  sc.surface_threshold = *get("method", "surface_threshold").value<double>();
+  sc.source_relaxation = *get("method", "source_relaxation").value<double>();
+  sc.wall_pressure_layers = static_cast<int>(*get("method", "wall_pressure_layers").value<long long>());
+  sc.clamp_negative_pressure = *get("method", "clamp_negative_pressure").value<bool>();
+  sc.collision_distance = *get("method", "collision_distance").value<double>();
+  sc.collision_restitution = *get("method", "collision_restitution").value<double>();
+  {
+    auto& sv = sc.solver;
+    auto str = [&](const char* key) { return *get("solver", key).value<std::string>(); };
+    auto integer = [&](const char* key) { return *get("solver", key).value<long long>(); };
+    sv.krylov = str("krylov");
+    sv.preconditioner = str("preconditioner");
+    sv.cycle = str("cycle");
+    sv.precision = str("precision");
+    sv.initial_guess = str("initial_guess");
+    sv.tolerance = *get("solver", "tolerance").value<double>();
+    sv.max_iterations = static_cast<int>(std::min<long long>(integer("max_iterations"), 1 << 30));
+    sv.pre_smoothing = static_cast<int>(integer("pre_smoothing"));
+    sv.post_smoothing = static_cast<int>(integer("post_smoothing"));
+    sv.bottom_smoothing = static_cast<int>(integer("bottom_smoothing"));
+    sv.bottom_size = integer("bottom_size");
+  }
   sc.end_time = *get("time", "end").value<double>();
   sc.cfl = *get("time", "cfl").value<double>();
   sc.fixed_dt = *get("time", "dt").value<double>();
@@ -367,8 +393,9 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   if (sc.fluid.empty()) val.fail(root["fluid"].node(), "fluid", "the scene has no [[fluid]] block");
   if (auto* arr = root["wall"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
+      const int covering = static_cast<int>(std::ceil(sc.support_radius() / sc.spacing - 1e-9));
       WallBox w{vec_of(*where("wall", i, "min")), vec_of(*where("wall", i, "max")),
-                static_cast<int>(*root["wall"][i]["layers"].value<long long>()),
+                static_cast<int>(root["wall"][i]["layers"].value_or(static_cast<long long>(covering))),
                 *root["wall"][i]["open_top"].value<bool>()};
       for (int a = 0; a < D; ++a)
         if (!(w.max[a] > w.min[a]))
@@ -386,6 +413,13 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
         std::ostringstream m;
         m << "[[wall]] #" << i << ": " << w.layers << " layers (" << thick << " m) do not cover the support radius "
           << sc.support_radius() << " m; use layers >= " << std::ceil(sc.support_radius() / sc.spacing - 1e-9);
+        val.fail(root["wall"][i]["layers"].node() ? root["wall"][i]["layers"].node() : &(*arr)[i], path_of("wall", i, "layers"), m.str());
+      }
+      const int reach = static_cast<int>(std::floor(sc.support_radius() / sc.spacing + 1e-9));
+      if (mps && w.layers < sc.wall_pressure_layers + reach) {
+        std::ostringstream m;
+        m << "[[wall]] #" << i << ": " << w.layers << " layers leave the innermost wall particles short of dummy particles; method mps needs layers >= wall_pressure_layers + floor(r_e / spacing) = "
+          << sc.wall_pressure_layers + reach;
         val.fail(root["wall"][i]["layers"].node() ? root["wall"][i]["layers"].node() : &(*arr)[i], path_of("wall", i, "layers"), m.str());
       }
       sc.walls.push_back(std::move(w));

@@ -32,6 +32,16 @@ struct SystemSpec {
   toml::table params;
 };
 
+// [solver]: the linear solver of an implicit method's pressure equation.
+struct SolverSpec {
+  std::string krylov = "cg", preconditioner = "multigrid", cycle = "sw", precision = "mixed";
+  std::string initial_guess = "previous";
+  double tolerance = 1e-8;
+  int max_iterations = 1000;
+  int pre_smoothing = 1, post_smoothing = 1, bottom_smoothing = 2;
+  long long bottom_size = 64;
+};
+
 struct Scene {
   std::string path, name, description;
   int dimension = 2;
@@ -45,6 +55,12 @@ struct Scene {
   std::string method = "wcsph";
   double delta = 0.1, alpha = 0.02, beta = 0;
   bool wall_slip = false, hydrostatic_init = true;
+  // method mps
+  double surface_threshold = 0.97, source_relaxation = 0.2;
+  int wall_pressure_layers = 1;
+  double collision_distance = 0.5, collision_restitution = 0.2;
+  bool clamp_negative_pressure = true;
+  SolverSpec solver;
   double end_time = 0, cfl = 0.2, fixed_dt = 0, dt_min = 1e-9;
   long long max_steps = 0;
   double output_interval = 0, probe_interval = 0;

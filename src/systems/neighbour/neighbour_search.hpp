@@ -24,9 +24,9 @@ void build_neighbour_list(const Domain<D>& domain, double radius, std::span<cons
 template <int D>
 class NeighbourSearch final : public System<D> {
  public:
-  // skip_wall_pairs: leave wall-wall pairs out of the list (no WCSPH system uses them).
-  explicit NeighbourSearch(double radius, bool skip_wall_pairs = false)
-      : radius_(radius), skip_wall_pairs_(skip_wall_pairs) {}
+  // skip_kind: leave pairs of two particles of this kind out of the list (WCSPH never uses
+  // wall-wall pairs, MPS never dummy-dummy pairs); -1 keeps every pair.
+  explicit NeighbourSearch(double radius, std::int32_t skip_kind = -1) : radius_(radius), skip_kind_(skip_kind) {}
   std::string name() const override { return "neighbour_search"; }
   Access access() const override {
     return Access{}
@@ -39,14 +39,14 @@ class NeighbourSearch final : public System<D> {
   }
   void run(SystemContext<D>& ctx) override {
     std::span<const std::int32_t> kind;
-    if (skip_wall_pairs_) kind = ctx.read(components::kind);
+    if (skip_kind_ >= 0) kind = ctx.read(components::kind);
     build_neighbour_list<D>(ctx.read(domain_resource<D>), radius_, ctx.read(components::position),
-                            ctx.write(cell_grid_resource<D>), ctx.write(neighbours_resource), kind, kWall);
+                            ctx.write(cell_grid_resource<D>), ctx.write(neighbours_resource), kind, skip_kind_);
   }
 
  private:
   double radius_;
-  bool skip_wall_pairs_;
+  std::int32_t skip_kind_;
 };
 
 }  // namespace ryushi

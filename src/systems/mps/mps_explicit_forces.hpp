@@ -1,0 +1,56 @@
+#pragma once
+// The explicit part of an MPS step (BMG paper eq. 3 without the pressure term): viscosity and
+// gravity give the predicted velocity and position
+//   u* = u^k + dt (nu <lap u>_i + g),   x* = x^k + dt u*,
+// with the MPS Laplacian (eq. 7) over fluid and wall neighbours (walls at rest: no-slip).
+#include "ecs/system.hpp"
+#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/mps/mps_parameters.hpp"
+#include "systems/neighbour/neighbour_list.hpp"
+
+namespace ryushi {
+
+template <int D>
+class MpsExplicitForces final : public System<D> {
+ public:
+  explicit MpsExplicitForces(const MpsParameters<D>& p) : p_(p) {}
+  std::string name() const override { return "mps_explicit_forces"; }
+  Access access() const override {
+    return Access{}
+        .read(components::kind, neighbours_resource, resources::dt, domain_resource<D>)
+        .write(components::position, components::velocity, components::acceleration);
+  }
+  void run(SystemContext<D>& ctx) override {
+    const double dt = ctx.read(resources::dt);
+    const auto& nl = ctx.read(neighbours_resource);
+    const auto& domain = ctx.read(domain_resource<D>);
+    auto kind = ctx.read(components::kind);
+    auto x = ctx.write(components::position);
+    auto v = ctx.write(components::velocity);
+    auto a = ctx.write(components::acceleration);
+    const double viscous = p_.nu * p_.laplacian_coefficient();
+    const bool periodic = domain.any_periodic();
+    // Gather every acceleration from u^k first, then move: a particle never reads a neighbour's
+    // already-updated velocity.
+    for_each_of_kind(kind, kFluid, [&](std::size_t i) {
+      Vec<D> lap = Vec<D>::Zero();
+      if (viscous > 0)
+        for (auto j : nl.of(i)) {
+          if (kind[j] == kDummy) continue;
+          Vec<D> r = periodic ? domain.displacement(x[j], x[i]) : Vec<D>(x[j] - x[i]);
+          lap += (v[j] - v[i]) * p_.weight.w(r.norm());
+        }
+      a[i] = viscous * lap + p_.gravity;
+    });
+    for_each_of_kind(kind, kFluid, [&](std::size_t i) {
+      v[i] += dt * a[i];
+      x[i] += dt * v[i];
+      if (periodic) domain.wrap(x[i]);
+    });
+  }
+
+ private:
+  MpsParameters<D> p_;
+};
+
+}  // namespace ryushi

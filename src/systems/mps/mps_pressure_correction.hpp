@@ -1,0 +1,68 @@
+#pragma once
+// The implicit part of an MPS step (BMG paper eq. 3): with the pressure of the Poisson equation,
+//   <grad p>_i = d/n0 sum_j (p_j - p^_i) r_ij / |r_ij|^2 w_ij,   p^_i = min(p_i, p_j : j in r_e)
+//   u^{k+1} = u* - dt/rho0 <grad p>_i,   x^{k+1} = x* + dt (u^{k+1} - u*)
+// The local minimum p^_i makes every pair term repulsive (Koshizuka's stabilisation). Fluid and
+// wall particles carry pressure; dummies are left out. With clamp_negative_pressure, p < 0 is
+// read as 0. The gradient is written to `pressure_gradient` (an output field).
+#include <algorithm>
+
+#include "ecs/system.hpp"
+#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/mps/mps_parameters.hpp"
+#include "systems/neighbour/neighbour_list.hpp"
+
+namespace ryushi {
+
+template <int D>
+class MpsPressureCorrection final : public System<D> {
+ public:
+  explicit MpsPressureCorrection(const MpsParameters<D>& p) : p_(p) {}
+  std::string name() const override { return "mps_pressure_correction"; }
+  Access access() const override {
+    return Access{}
+        .read(components::pressure, components::kind, neighbours_resource, resources::dt, domain_resource<D>)
+        .write(components::position, components::velocity, components::pressure_gradient);
+  }
+  void run(SystemContext<D>& ctx) override {
+    const double dt = ctx.read(resources::dt);
+    const auto& nl = ctx.read(neighbours_resource);
+    const auto& domain = ctx.read(domain_resource<D>);
+    const bool periodic = domain.any_periodic();
+    auto p = ctx.read(components::pressure);
+    auto kind = ctx.read(components::kind);
+    auto x = ctx.write(components::position);
+    auto v = ctx.write(components::velocity);
+    auto grad = ctx.write(components::pressure_gradient);
+    const double re = p_.weight.support();
+    auto pressure = [&](std::size_t j) { return p_.clamp_negative_pressure ? std::max(p[j], 0.0) : p[j]; };
+    auto rij = [&](std::size_t i, std::size_t j) {
+      return periodic ? domain.displacement(x[j], x[i]) : Vec<D>(x[j] - x[i]);
+    };
+    for_each_of_kind(kind, kFluid, [&](std::size_t i) {
+      double low = pressure(i);
+      for (auto j : nl.of(i))
+        if (kind[j] != kDummy && rij(i, j).norm() < re) low = std::min(low, pressure(j));
+      Vec<D> g = Vec<D>::Zero();
+      for (auto j : nl.of(i)) {
+        if (kind[j] == kDummy) continue;
+        Vec<D> r = rij(i, j);
+        double w = p_.weight.w(r.norm());
+        if (w > 0) g += (pressure(j) - low) / r.squaredNorm() * w * r;
+      }
+      grad[i] = (D / p_.n0) * g;
+    });
+    const double scale = dt / p_.rho0;
+    for_each_of_kind(kind, kFluid, [&](std::size_t i) {
+      Vec<D> dv = -scale * grad[i];
+      v[i] += dv;
+      x[i] += dt * dv;
+      if (periodic) domain.wrap(x[i]);
+    });
+  }
+
+ private:
+  MpsParameters<D> p_;
+};
+
+}  // namespace ryushi

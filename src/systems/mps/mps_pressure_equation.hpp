@@ -1,0 +1,108 @@
+#pragma once
+// Assembles the MPS pressure Poisson equation (BMG paper eqs. 4 and 7) at the predicted
+// positions:
+//   -<lap p>_i = 2d/(lambda0 n0) sum_j (p_i - p_j) w_ij = gamma rho0/dt^2 (n*_i - n0)/n0
+// for every particle whose pressure is unknown (fluid and wall particles below the surface).
+// Neighbours on the free surface carry p = 0 (they add to the diagonal only); dummy particles
+// carry no pressure and are left out, as in Koshizuka's MPS. gamma is the source relaxation
+// (0.2 in the paper's dam break). A is symmetric positive definite once any row touches the
+// surface.
+#include <tbb/parallel_for.h>
+
+#include "ecs/system.hpp"
+#include "systems/mps/mps_parameters.hpp"
+#include "systems/neighbour/neighbour_list.hpp"
+#include "systems/pressure/pressure_system.hpp"
+
+namespace ryushi {
+
+template <int D>
+class MpsPressureEquation final : public System<D> {
+ public:
+  explicit MpsPressureEquation(const MpsParameters<D>& p) : p_(p) {}
+  std::string name() const override { return "ppe_assembly"; }
+  Access access() const override {
+    return Access{}
+        .read(components::position, components::number_density, components::pressure_role,
+              neighbours_resource, resources::dt, domain_resource<D>)
+        .write(pressure_system_resource);
+  }
+  void initialise(World<D>&, Resources& res) override { res.ensure(pressure_system_resource); }
+  void run(SystemContext<D>& ctx) override {
+    const double dt = ctx.read(resources::dt);
+    const auto& nl = ctx.read(neighbours_resource);
+    const auto& domain = ctx.read(domain_resource<D>);
+    const bool periodic = domain.any_periodic();
+    auto x = ctx.read(components::position);
+    auto n = ctx.read(components::number_density);
+    auto role = ctx.read(components::pressure_role);
+    auto& sys = ctx.write(pressure_system_resource);
+    const double c = p_.laplacian_coefficient();
+    const double source = p_.relaxation * p_.rho0 / (dt * dt * p_.n0);
+
+    row_of_.assign(x.size(), kNoRow);
+    sys.particle_of_row.clear();
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if (role[i] == kPressureUnknown) {
+        row_of_[i] = static_cast<std::uint32_t>(sys.particle_of_row.size());
+        sys.particle_of_row.push_back(static_cast<std::uint32_t>(i));
+      }
+    const std::size_t rows = sys.particle_of_row.size();
+    auto rij = [&](std::size_t i, std::size_t j) {
+      return periodic ? domain.displacement(x[j], x[i]) : Vec<D>(x[j] - x[i]);
+    };
+    // Pass 1: entries per row (the diagonal plus unknown neighbours inside r_e).
+    auto& A = sys.A;
+    A.rows = A.cols = rows;
+    A.row_ptr.assign(rows + 1, 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 512), [&](auto range) {
+      for (std::size_t r = range.begin(); r != range.end(); ++r) {
+        const std::size_t i = sys.particle_of_row[r];
+        std::uint64_t count = 1;
+        for (auto j : nl.of(i))
+          if (row_of_[j] != kNoRow && p_.weight.w(rij(i, j).norm()) > 0) ++count;
+        A.row_ptr[r + 1] = count;
+      }
+    });
+    for (std::size_t r = 0; r < rows; ++r) A.row_ptr[r + 1] += A.row_ptr[r];
+    A.col.resize(A.row_ptr[rows]);
+    A.val.resize(A.row_ptr[rows]);
+    sys.b.resize(rows);
+    sys.coordinates.resize(rows * D);
+    // Pass 2: values, the diagonal first in each row's slot range, then sorted by column.
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 512), [&](auto range) {
+      std::vector<std::pair<std::uint32_t, double>> entries;
+      for (std::size_t r = range.begin(); r != range.end(); ++r) {
+        const std::size_t i = sys.particle_of_row[r];
+        entries.clear();
+        double diagonal = 0;
+        for (auto j : nl.of(i)) {
+          if (role[j] == kPressureNone) continue;
+          double w = p_.weight.w(rij(i, j).norm());
+          if (w <= 0) continue;
+          diagonal += c * w;
+          if (row_of_[j] != kNoRow) entries.emplace_back(row_of_[j], -c * w);
+        }
+        entries.emplace_back(static_cast<std::uint32_t>(r), diagonal);
+        std::sort(entries.begin(), entries.end());
+        auto k = A.row_ptr[r];
+        for (auto& [col, val] : entries) {
+          A.col[k] = col;
+          A.val[k++] = val;
+        }
+        sys.b[r] = source * (n[i] - p_.n0);
+        for (int a = 0; a < D; ++a) sys.coordinates[r * D + a] = x[i][a];
+      }
+    });
+    sys.dimension = D;
+    sys.bucket_width = p_.weight.support();
+    sys.symmetric = true;
+  }
+
+ private:
+  static constexpr std::uint32_t kNoRow = UINT32_MAX;
+  MpsParameters<D> p_;
+  std::vector<std::uint32_t> row_of_;  // kept between steps to avoid reallocation
+};
+
+}  // namespace ryushi

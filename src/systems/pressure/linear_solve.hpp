@@ -1,0 +1,73 @@
+#pragma once
+// Solves the assembled pressure equation with the scene's Krylov method and preconditioner and
+// scatters the solution into the `pressure` column (rows are particles; particles without a row
+// keep the Dirichlet value 0). The initial guess is the previous step's pressure or zero. A solve
+// that does not converge is a numerical failure: the step stops with the solver's reason.
+#include <cstdio>
+#include <stdexcept>
+
+#include "ecs/system.hpp"
+#include "scene/scene.hpp"
+#include "solvers/krylov.hpp"
+#include "systems/pressure/pressure_system.hpp"
+
+namespace ryushi {
+
+template <int D>
+class LinearSolve final : public System<D> {
+ public:
+  explicit LinearSolve(const SolverSpec& s) : spec_(s) {}
+  std::string name() const override { return "linear_solve"; }
+  Access access() const override {
+    Access a;
+    a.read(pressure_system_resource).write(components::pressure, solve_statistics_resource);
+    if (spec_.preconditioner != "none") a.read(preconditioner_resource);
+    return a;
+  }
+  void initialise(World<D>&, Resources& res) override { res.ensure(solve_statistics_resource); }
+  void run(SystemContext<D>& ctx) override {
+    const auto& sys = ctx.read(pressure_system_resource);
+    auto p = ctx.write(components::pressure);
+    auto& stats = ctx.write(solve_statistics_resource);
+    const std::size_t rows = sys.A.rows;
+    x_.assign(rows, 0.0);
+    if (spec_.initial_guess == "previous")
+      for (std::size_t r = 0; r < rows; ++r) x_[r] = p[sys.particle_of_row[r]];
+    solvers::SolveStatus status;
+    status.converged = true;
+    status.relative_residual = 0;
+    if (rows > 0) {
+      const solvers::Preconditioner* M = &identity_;
+      if (spec_.preconditioner != "none") {
+        const auto& pre = ctx.read(preconditioner_resource);
+        if (pre.M) M = pre.M.get();
+      }
+      solvers::SolveOptions o{spec_.tolerance, spec_.max_iterations};
+      status = spec_.krylov == "bicgstab" || !sys.symmetric ? solvers::bicgstab(sys.A, sys.b, x_, *M, o)
+                                                            : solvers::conjugate_gradient(sys.A, sys.b, x_, *M, o);
+      if (!status.converged) {
+        char m[256];
+        std::snprintf(m, sizeof m, "%s on %zu unknowns stopped after %d iterations at relative residual %.3e: %s",
+                      spec_.krylov.c_str(), rows, status.iterations, status.relative_residual, status.reason.c_str());
+        throw std::runtime_error(m);
+      }
+    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, p.size(), 4096), [&](auto range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) p[i] = 0.0;
+    });
+    for (std::size_t r = 0; r < rows; ++r) p[sys.particle_of_row[r]] = x_[r];
+    ++stats.solves;
+    stats.iterations += status.iterations;
+    stats.max_iterations = std::max(stats.max_iterations, status.iterations);
+    stats.max_relative_residual = std::max(stats.max_relative_residual, status.relative_residual);
+    stats.max_rows = std::max(stats.max_rows, rows);
+    stats.max_nonzeros = std::max(stats.max_nonzeros, sys.A.nonzeros());
+  }
+
+ private:
+  SolverSpec spec_;
+  solvers::IdentityPreconditioner identity_;
+  std::vector<double> x_;
+};
+
+}  // namespace ryushi

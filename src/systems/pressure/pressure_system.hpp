@@ -1,0 +1,46 @@
+#pragma once
+// The assembled pressure equation A p = b of an implicit method, as a resource shared by the
+// assembly, the preconditioner setup, the linear solve and the matrix dump. Rows are the
+// particles whose pressure is unknown, in particle order; `coordinates` (rows x dimension,
+// row-major) lets the bucket multigrid build its hierarchy from where the particles are.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ecs/resources.hpp"
+#include "solvers/csr_matrix.hpp"
+#include "solvers/krylov.hpp"
+
+namespace ryushi {
+
+struct PressureSystem {
+  solvers::CsrMatrix<double> A;
+  std::vector<double> b;
+  std::vector<std::uint32_t> particle_of_row;
+  std::vector<double> coordinates;
+  int dimension = 2;
+  double bucket_width = 0;  // the influence radius: no coupling is longer
+  bool symmetric = true;    // cg applies; otherwise bicgstab
+};
+
+// Built by the preconditioner setup system; null means no preconditioner.
+struct PressurePreconditioner {
+  std::unique_ptr<solvers::Preconditioner> M;
+  std::size_t bytes = 0;
+  int levels = 0;
+};
+
+// What the linear solves of a run did, for summary.json.
+struct LinearSolveStatistics {
+  long long solves = 0, iterations = 0;
+  int max_iterations = 0;
+  double max_relative_residual = 0;
+  std::size_t max_rows = 0, max_nonzeros = 0;
+};
+
+inline constexpr Resource<PressureSystem> pressure_system_resource{"pressure_system"};
+inline constexpr Resource<PressurePreconditioner> preconditioner_resource{"preconditioner"};
+inline constexpr Resource<LinearSolveStatistics> solve_statistics_resource{"solve_statistics"};
+
+}  // namespace ryushi

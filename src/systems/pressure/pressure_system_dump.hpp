@@ -1,0 +1,51 @@
+#pragma once
+// `ryushi run --dump-matrix DIR [--dump-step N]`: at step N (counted from 0) writes the pressure
+// equation of that step so external solvers can be compared on the very same system:
+//   A.mtx  the matrix (Matrix Market, coordinate real general)
+//   b.txt  the right-hand side, one value per line
+//   x.txt  the coordinates of the particle of each row, D values per line
+//   p.txt  the solution ryushi's linear solve returned, one value per line
+// `ryushi solve DIR/A.mtx --rhs DIR/b.txt --coords DIR/x.txt` solves it again. It reads the
+// pressure column, so it runs after the linear solve; each file is written to NAME.tmp and
+// renamed.
+#include <filesystem>
+
+#include "ecs/system.hpp"
+#include "solvers/matrix_market.hpp"
+#include "systems/pressure/pressure_system.hpp"
+
+namespace ryushi {
+
+template <int D>
+class PressureSystemDump final : public System<D> {
+ public:
+  PressureSystemDump(std::filesystem::path dir, long long step) : dir_(std::move(dir)), step_(step) {}
+  std::string name() const override { return "pressure_system_dump"; }
+  Access access() const override {
+    return Access{}.read(pressure_system_resource, components::pressure, resources::step);
+  }
+  void run(SystemContext<D>& ctx) override {
+    if (ctx.read(resources::step) != step_) return;
+    const auto& sys = ctx.read(pressure_system_resource);
+    auto p = ctx.read(components::pressure);
+    std::vector<double> solution(sys.A.rows);
+    for (std::size_t r = 0; r < sys.A.rows; ++r) solution[r] = p[sys.particle_of_row[r]];
+    std::filesystem::create_directories(dir_);
+    publish("A.mtx", [&](const std::string& f) { solvers::write_matrix_market(f, sys.A); });
+    publish("b.txt", [&](const std::string& f) { solvers::write_values(f, sys.b); });
+    publish("x.txt", [&](const std::string& f) { solvers::write_values(f, sys.coordinates, D); });
+    publish("p.txt", [&](const std::string& f) { solvers::write_values(f, solution); });
+  }
+
+ private:
+  template <class Write>
+  void publish(const std::string& name, Write&& write) const {
+    auto target = dir_ / name, tmp = dir_ / (name + ".tmp");
+    write(tmp.string());
+    std::filesystem::rename(tmp, target);
+  }
+  std::filesystem::path dir_;
+  long long step_;
+};
+
+}  // namespace ryushi

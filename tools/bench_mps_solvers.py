@@ -1,0 +1,81 @@
+#!/usr/bin/python3
+"""MPS dam break with each pressure-solver set-up, side by side in one run (BMG paper section 6,
+cases 2A/2B: per-step time split into the method's systems, multigrid against diagonal-scaled CG).
+
+Usage: /usr/bin/python3 tools/bench_mps_solvers.py [--build build] [--spacing 0.00125]
+                                                   [--steps 40] [--threads 2]
+The default spacing, a / l0 = 200, gives 80,000 fluid particles (the paper's case 2A count).
+Prints, per configuration: ms per step for each system, mean CG iterations per solve, total
+ms per step and the speed-up of the total against DCG; plus particle-steps per second and ns
+per particle per system.
+"""
+import argparse
+import json
+import os
+import subprocess
+import tempfile
+
+CONFIGS = [
+    ("DCG", ["solver.preconditioner=jacobi"]),
+    ("MGCG V double", ["solver.preconditioner=multigrid", "solver.cycle=v", "solver.precision=double"]),
+    ("MGCG W double", ["solver.preconditioner=multigrid", "solver.cycle=w", "solver.precision=double"]),
+    ("MGCG S-W double", ["solver.preconditioner=multigrid", "solver.cycle=sw", "solver.precision=double"]),
+    ("MGCG S-W mixed", ["solver.preconditioner=multigrid", "solver.cycle=sw", "solver.precision=mixed"]),
+]
+
+
+def run(args, sets, out):
+    cmd = [os.path.join(args.build, "ryushi"), "run", "scenes/dam_break_mps_2d.toml", "--out", out,
+           "--threads", str(args.threads), "--quiet",
+           "--set", f"particles.spacing={args.spacing}", "--set", f"time.max_steps={args.steps}",
+           "--set", "output.interval=100", "--set", f"solver.tolerance={args.tolerance}"]
+    for s in sets:
+        cmd += ["--set", s]
+    subprocess.run(cmd, check=True)
+    with open(os.path.join(out, "profile.json")) as f:
+        profile = json.load(f)
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    return profile, summary
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("--build", default="build")
+    p.add_argument("--spacing", type=float, default=0.00125)
+    p.add_argument("--steps", type=int, default=40)
+    p.add_argument("--threads", type=int, default=2)
+    p.add_argument("--tolerance", type=float, default=1e-8)
+    args = p.parse_args()
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, sets in CONFIGS:
+            profile, summary = run(args, sets, os.path.join(tmp, name.replace(" ", "_")))
+            per_system = {s["name"]: s["mean_s"] * 1e3 for s in profile["systems"]}
+            steps = summary["steps"]
+            rows.append((name, per_system, profile["step_wall_s"] / steps * 1e3, summary))
+    n = rows[0][3]["particles"]
+    fluid = rows[0][3]["fluid_particles"]
+    print(f"# MPS dam break, {fluid} fluid + {n - fluid} wall particles, {args.steps} steps, "
+          f"{args.threads} threads, tolerance {args.tolerance}")
+    systems = ["neighbour_search", "mps_explicit_forces", "mps_number_density", "ppe_assembly",
+               "jacobi_setup", "multigrid_setup", "linear_solve", "mps_pressure_correction", "mps_collision"]
+    header = f"{'system (ms/step)':26s}" + "".join(f"{r[0]:>17s}" for r in rows)
+    print(header)
+    for s in systems:
+        print(f"{s:26s}" + "".join(f"{r[1].get(s, 0.0):17.2f}" for r in rows))
+    print(f"{'step total':26s}" + "".join(f"{r[2]:17.2f}" for r in rows))
+    print(f"{'CG iterations / solve':26s}" + "".join(f"{r[3]['linear_solver']['mean_iterations']:17.1f}" for r in rows))
+    dcg_total, dcg_solve = rows[0][2], rows[0][1]["linear_solve"]
+    print(f"{'speed-up, step':26s}" + "".join(f"{dcg_total / r[2]:17.2f}" for r in rows))
+    setup = lambda r: r[1].get("multigrid_setup", 0.0) + r[1].get("jacobi_setup", 0.0)
+    print(f"{'speed-up, setup + solve':26s}" +
+          "".join(f"{(dcg_solve + setup(rows[0])) / (r[1]['linear_solve'] + setup(r)):17.2f}" for r in rows))
+    print(f"{'particle-steps/s':26s}" + "".join(f"{n / (r[2] * 1e-3):17.3g}" for r in rows))
+    print(f"{'solve ns/particle':26s}" + "".join(f"{r[1]['linear_solve'] * 1e6 / n:17.1f}" for r in rows))
+    print(f"bytes per particle: columns {rows[0][3]['bytes_per_particle']['columns']}, "
+          f"neighbour list {rows[0][3]['bytes_per_particle']['neighbour_list']:.0f}")
+
+
+if __name__ == "__main__":
+    main()
