@@ -289,6 +289,9 @@ class Runner {
   }
 
   void finish(const std::string& status, const std::string& message) {
+    if (!opt_.dump_matrix_dir.empty() && step_ <= opt_.dump_step)
+      spdlog::warn("--dump-matrix: the run ended after {} steps, before --dump-step {}; nothing was dumped", step_,
+                   opt_.dump_step);
     if (!scene_.probes.empty()) write_text_atomic(out_ / "probes.csv", probes_csv(scene_.probes, probe_rows_));
     write_summary(status, message);
     write_text_atomic(out_ / "profile.json", profiler_.json());

@@ -449,6 +449,12 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       val.fail(get("domain", "periodic").as_array()->get(a), "domain.periodic",
                "periodic axis " + std::to_string(a) + " is shorter than three support radii (" +
                    std::to_string(3 * sc.support_radius()) + " m)");
+  if (mps && sc.solver.preconditioner == "multigrid")
+    for (int a = 0; a < D; ++a)
+      if (sc.periodic[a])
+        val.fail(get("domain", "periodic").as_array()->get(a), "domain.periodic",
+                 "the bucket multigrid does not wrap periodic axes (axis " + std::to_string(a) +
+                     "); use [solver] preconditioner = \"jacobi\" with a periodic domain");
   if (sc.fixed_dt > sc.end_time) val.fail(root["time"]["dt"].node(), "time.dt", "time.dt is larger than time.end");
   return sc;
 }
