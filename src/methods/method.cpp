@@ -29,10 +29,11 @@ MethodSetup<D> build_method(const Scene& s, World<D>& world, const PipelineOptio
     m.pipeline = mps_pipeline<D>(s, p);
     m.first_dt = MpsTimeStep<D>(p).limit(0.0);
     m.density_may_vanish = true;
-    m.summary = format("r_e = %.4g m", p.weight.support()) + ", " + s.solver.krylov + " + " +
-                s.solver.preconditioner;
+    m.summary =
+        format("r_e = %.4g m", p.weight.support()) + ", " + s.solver.krylov + " + " + s.solver.preconditioner;
     if (!options.dump_matrix_dir.empty())
-      m.pipeline.push_back(std::make_shared<PressureSystemDump<D>>(options.dump_matrix_dir, options.dump_step));
+      m.pipeline.push_back(
+          std::make_shared<PressureSystemDump<D>>(options.dump_matrix_dir, options.dump_step));
   } else {
     if (!options.dump_matrix_dir.empty())
       throw SceneError(s.path + ": --dump-matrix: method '" + s.method +
@@ -43,7 +44,8 @@ MethodSetup<D> build_method(const Scene& s, World<D>& world, const PipelineOptio
     m.summary = format("h = %.4g m", m.physics.kernel.h()) + format(", c0 = %.4g m/s", m.physics.c0);
   }
   // The scene's registered [[systems]] go last; the scheduler places them by their access.
-  for (auto& extra : s.systems) m.pipeline.push_back(make_registered_system<D>(extra.name, extra.params, m.physics));
+  for (auto& extra : s.systems)
+    m.pipeline.push_back(make_registered_system<D>(extra.name, extra.params, m.physics));
   return m;
 }
 

@@ -78,7 +78,8 @@ std::vector<SystemPtr<D>> mps_pipeline(const Scene& s, const MpsParameters<D>& p
   list.push_back(std::make_shared<LinearSolve<D>>(s.solver));
   list.push_back(std::make_shared<MpsPressureCorrection<D>>(p));
   if (s.collision_distance > 0)
-    list.push_back(std::make_shared<MpsCollision<D>>(p, s.collision_distance, s.collision_restitution));
+    list.push_back(std::make_shared<MpsCollision<D>>(p, s.collision_distance, s.wall_collision_distance,
+                                                     s.collision_restitution));
   if (s.fixed_dt <= 0) list.push_back(std::make_shared<MpsTimeStep<D>>(p));
   return list;
 }

@@ -328,6 +328,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.clamp_negative_pressure = *get("method", "clamp_negative_pressure").value<bool>();
   sc.collision_distance = *get("method", "collision_distance").value<double>();
   sc.collision_restitution = *get("method", "collision_restitution").value<double>();
+  sc.wall_collision_distance = *get("method", "wall_collision_distance").value<double>();
   {
     auto& sv = sc.solver;
     auto str = [&](const char* key) { return *get("solver", key).value<std::string>(); };

@@ -58,7 +58,7 @@ struct Scene {
   // method mps
   double surface_threshold = 0.97, source_relaxation = 0.2;
   int wall_pressure_layers = 1;
-  double collision_distance = 0.5, collision_restitution = 0.2;
+  double collision_distance = 0.5, wall_collision_distance = 0.8, collision_restitution = 0.2;
   bool clamp_negative_pressure = true;
   SolverSpec solver;
   double end_time = 0, cfl = 0.2, fixed_dt = 0, dt_min = 1e-9;

@@ -5,8 +5,11 @@
 //   du_i = -(1 + e) m_j / (m_i + m_j) ((u_i - u_j) . n) n,   n = (x_j - x_i) / |x_j - x_i|,
 // with walls as infinite masses at rest; then x_i += dt du_i. The pressure gradient alone lets
 // fast particles reach a wall particle at a violent impact (the dam break's far wall), where the
-// weight r_e / r - 1 diverges. Every particle gathers from the velocities before the collision
-// (no order dependence) and writes only itself.
+// weight r_e / r - 1 diverges. Wall pairs use a longer distance: a particle crossing a wall
+// layer through the middle of a lattice square passes 0.71 l0 from its four corners (3D), so a
+// 0.5 l0 distance never fires there; at 0.8 l0 an approaching particle is turned back before it
+// is 0.62 l0 from the wall plane, and a fluid particle at rest (l0 from the wall) is untouched. Every
+// particle gathers from the velocities before the collision (no order dependence) and writes only itself.
 #include "ecs/system.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/mps/mps_parameters.hpp"
@@ -17,8 +20,11 @@ namespace ryushi {
 template <int D>
 class MpsCollision final : public System<D> {
  public:
-  MpsCollision(const MpsParameters<D>& p, double distance, double restitution)
-      : p_(p), distance_(distance * p.spacing), restitution_(restitution) {}
+  MpsCollision(const MpsParameters<D>& p, double distance, double wall_distance, double restitution)
+      : p_(p),
+        distance_(distance * p.spacing),
+        wall_distance_(wall_distance * p.spacing),
+        restitution_(restitution) {}
   std::string name() const override { return "mps_collision"; }
   Access access() const override {
     return Access{}
@@ -35,13 +41,13 @@ class MpsCollision final : public System<D> {
     auto v = ctx.write(components::velocity);
     dv_.resize(x.size());
     auto& dv = dv_;
-    const double d2 = distance_ * distance_;
+    const double fluid2 = distance_ * distance_, wall2 = wall_distance_ * wall_distance_;
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       Vec<D> change = Vec<D>::Zero();
       for (auto j : nl.of(i)) {
         Vec<D> r = periodic ? domain.displacement(x[j], x[i]) : Vec<D>(x[j] - x[i]);
         double r2 = r.squaredNorm();
-        if (r2 >= d2 || r2 == 0) continue;
+        if (r2 >= (kind[j] == kFluid ? fluid2 : wall2) || r2 == 0) continue;
         Vec<D> n = r / std::sqrt(r2);
         double approach = (v[i] - v[j]).dot(n);  // > 0: closing in
         if (approach <= 0) continue;
@@ -59,7 +65,7 @@ class MpsCollision final : public System<D> {
 
  private:
   MpsParameters<D> p_;
-  double distance_, restitution_;
+  double distance_, wall_distance_, restitution_;
   std::vector<Vec<D>> dv_;  // this step's velocity change per particle (scratch)
 };
 

@@ -24,9 +24,9 @@ struct MpsParameters {
   Kernel<D> weight{KernelType::Mps, 1.0};  // h = r_e
   Domain<D> domain;
   Vec<D> gravity = Vec<D>::Zero();
-  double spacing = 1;      // l0
+  double spacing = 1;  // l0
   double rho0 = 1000;
-  double nu = 0;           // kinematic viscosity mu / rho0
+  double nu = 0;  // kinematic viscosity mu / rho0
   double n0 = 1, lambda0 = 1;
   double surface_threshold = 0.97;  // beta in n* < beta n0
   double relaxation = 0.2;          // gamma on the Poisson source

@@ -9,6 +9,12 @@
 // surface.
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
 #include "ecs/system.hpp"
 #include "systems/mps/mps_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
@@ -23,8 +29,8 @@ class MpsPressureEquation final : public System<D> {
   std::string name() const override { return "ppe_assembly"; }
   Access access() const override {
     return Access{}
-        .read(components::position, components::number_density, components::pressure_role,
-              neighbours_resource, resources::dt, domain_resource<D>)
+        .read(components::position, components::number_density, components::pressure_role, components::id,
+              components::kind, neighbours_resource, resources::dt, domain_resource<D>)
         .write(pressure_system_resource);
   }
   void initialise(World<D>&, Resources& res) override { res.ensure(pressure_system_resource); }
@@ -70,8 +76,10 @@ class MpsPressureEquation final : public System<D> {
     sys.b.resize(rows);
     sys.coordinates.resize(rows * D);
     // Pass 2: values, the diagonal first in each row's slot range, then sorted by column.
+    std::atomic<std::size_t> bad_row_found{kNoRow};
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 512), [&](auto range) {
       std::vector<std::pair<std::uint32_t, double>> entries;
+      std::size_t bad_row = kNoRow;
       for (std::size_t r = range.begin(); r != range.end(); ++r) {
         const std::size_t i = sys.particle_of_row[r];
         entries.clear();
@@ -83,6 +91,7 @@ class MpsPressureEquation final : public System<D> {
           diagonal += c * w;
           if (row_of_[j] != kNoRow) entries.emplace_back(row_of_[j], -c * w);
         }
+        if (!(diagonal > 0) || !std::isfinite(diagonal)) bad_row = std::min<std::size_t>(bad_row, r);
         entries.emplace_back(static_cast<std::uint32_t>(r), diagonal);
         std::sort(entries.begin(), entries.end());
         auto k = A.row_ptr[r];
@@ -93,13 +102,33 @@ class MpsPressureEquation final : public System<D> {
         sys.b[r] = source * (n[i] - p_.n0);
         for (int a = 0; a < D; ++a) sys.coordinates[r * D + a] = x[i][a];
       }
+      for (auto seen = bad_row_found.load();
+           bad_row < seen && !bad_row_found.compare_exchange_weak(seen, bad_row);) {
+      }
     });
+    if (bad_row_found != kNoRow) report_bad_row(ctx, sys.particle_of_row[bad_row_found], x, n);
     sys.dimension = D;
     sys.bucket_width = p_.weight.support();
     sys.symmetric = true;
   }
 
  private:
+  // A row without a positive, finite diagonal would make the system singular: a particle whose
+  // number density is full but whose neighbours within r_e carry no pressure (it has passed
+  // into the dummy layers), or two particles at the same point.
+  [[noreturn]] void report_bad_row(SystemContext<D>& ctx, std::size_t i, std::span<const Vec<D>> x,
+                                   std::span<const double> n) const {
+    std::ostringstream m;
+    m << (ctx.read(components::kind)[i] == kFluid ? "fluid" : "wall") << " particle id "
+      << ctx.read(components::id)[i] << " at (";
+    for (int a = 0; a < D; ++a) m << (a ? ", " : "") << x[i][a];
+    m << ") has n* = " << n[i] / p_.n0
+      << " n0 but no pressure-carrying neighbour at a finite distance within r_e (inside the dummy wall "
+         "layers, or "
+         "on top of another particle): its pressure row would be singular";
+    throw std::runtime_error(m.str());
+  }
+
   static constexpr std::uint32_t kNoRow = UINT32_MAX;
   MpsParameters<D> p_;
   std::vector<std::uint32_t> row_of_;  // kept between steps to avoid reallocation

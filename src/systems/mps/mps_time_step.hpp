@@ -3,8 +3,8 @@
 //   Courant:  cfl * l0 / max(|u|max, sqrt(2 g H))   (BMG paper: Courant number <= 0.2)
 //   viscous:  0.2 * l0^2 / nu                       (explicit viscosity)
 // sqrt(2 g H) is the speed a collapsing column of height H reaches (1 m/s without gravity); it
-// bounds dt while the fluid is still at rest, and it keeps each particle's predictor displacement below cfl * l0, which
-// the neighbour list's skin relies on (MpsParameters::search_radius).
+// bounds dt while the fluid is still at rest, and it keeps each particle's predictor displacement below cfl *
+// l0, which the neighbour list's skin relies on (MpsParameters::search_radius).
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 

@@ -43,12 +43,14 @@ class LinearSolve final : public System<D> {
         if (pre.M) M = pre.M.get();
       }
       solvers::SolveOptions o{spec_.tolerance, spec_.max_iterations};
-      status = spec_.krylov == "bicgstab" || !sys.symmetric ? solvers::bicgstab(sys.A, sys.b, x_, *M, o)
-                                                            : solvers::conjugate_gradient(sys.A, sys.b, x_, *M, o);
+      status = spec_.krylov == "bicgstab" || !sys.symmetric
+                   ? solvers::bicgstab(sys.A, sys.b, x_, *M, o)
+                   : solvers::conjugate_gradient(sys.A, sys.b, x_, *M, o);
       if (!status.converged) {
         char m[256];
-        std::snprintf(m, sizeof m, "%s on %zu unknowns stopped after %d iterations at relative residual %.3e: %s",
-                      spec_.krylov.c_str(), rows, status.iterations, status.relative_residual, status.reason.c_str());
+        std::snprintf(
+            m, sizeof m, "%s on %zu unknowns stopped after %d iterations at relative residual %.3e: %s",
+            spec_.krylov.c_str(), rows, status.iterations, status.relative_residual, status.reason.c_str());
         throw std::runtime_error(m);
       }
     }

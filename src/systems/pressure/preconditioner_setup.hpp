@@ -27,7 +27,9 @@ class PreconditionerSetup final : public System<D> {
  public:
   explicit PreconditionerSetup(const SolverSpec& s) : spec_(s) {}
   std::string name() const override { return spec_.preconditioner + "_setup"; }
-  Access access() const override { return Access{}.read(pressure_system_resource).write(preconditioner_resource); }
+  Access access() const override {
+    return Access{}.read(pressure_system_resource).write(preconditioner_resource);
+  }
   void initialise(World<D>&, Resources& res) override { res.ensure(preconditioner_resource); }
   void run(SystemContext<D>& ctx) override {
     const auto& sys = ctx.read(pressure_system_resource);
@@ -42,7 +44,7 @@ class PreconditionerSetup final : public System<D> {
       out.levels = 1;
     } else {
       auto mg = std::make_unique<solvers::BucketMultigrid>(sys.A, sys.coordinates, sys.dimension,
-                                                            sys.bucket_width, multigrid_options(spec_));
+                                                           sys.bucket_width, multigrid_options(spec_));
       out.bytes = mg->bytes();
       out.levels = static_cast<int>(mg->levels().size());
       out.M = std::move(mg);
