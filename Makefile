@@ -45,6 +45,7 @@ bench: build py-deps
 	tools/bench_dam_break.sh $(BUILD)
 	mkdir -p docs/img
 	$(BUILD)/bench/ryushi_bench_solvers 2
+	/usr/bin/python3 tools/bench_mps_solvers.py --build $(BUILD)
 	$(BUILD)/bench/ryushi_bench_operators docs/img/operators.csv 2
 	/usr/bin/python3 tools/plot_operators.py docs/img/operators.csv docs/img/operators_speed_accuracy.png
 

@@ -104,7 +104,7 @@ TEST_CASE("mps: hydrostatic tank, mean pressure follows rho g depth") {
 // The BMG paper's check (section 6, Fig. 7): the same dam break with the multigrid-
 // preconditioned CG and with diagonal-scaled CG gives the same flow. With both solved to
 // 1e-10 the particle positions after 0.1 s agree to far below a particle spacing (measured:
-// 8e-12 l0) and the multigrid needs fewer iterations per solve.
+// 3e-10 l0) and the multigrid needs fewer iterations per solve.
 TEST_CASE("mps: dam break with MGCG and DCG gives the same flow") {
   auto mg = test::scratch("mps_mgcg"), dcg = test::scratch("mps_dcg");
   const double l0 = 0.00625;  // a / l0 = 40: 3,200 fluid particles
