@@ -166,11 +166,11 @@ struct Hierarchy final : BucketMultigrid::Impl {
   void jacobi(const Level<T>& l, bool zero) const {
     const T w = static_cast<T>(o.jacobi_weight);
     if (zero) {
-      tbb::parallel_for(std::size_t(0), l.r.size(), [&](std::size_t i) { l.z[i] = w * l.inverse_diagonal[i] * l.r[i]; });
+      parallel_indices(l.r.size(), [&](std::size_t i) { l.z[i] = w * l.inverse_diagonal[i] * l.r[i]; });
       return;
     }
     spmv<T, T, T>(l.A, std::span<const T>(l.z), std::span<T>(l.tmp));
-    tbb::parallel_for(std::size_t(0), l.r.size(), [&](std::size_t i) { l.z[i] += w * l.inverse_diagonal[i] * (l.r[i] - l.tmp[i]); });
+    parallel_indices(l.r.size(), [&](std::size_t i) { l.z[i] += w * l.inverse_diagonal[i] * (l.r[i] - l.tmp[i]); });
   }
 
   void cycle(std::size_t k, bool zero) const {
@@ -184,22 +184,22 @@ struct Hierarchy final : BucketMultigrid::Impl {
     if (o.pre_smoothing == 0 && zero) std::fill(l.z.begin(), l.z.end(), T(0));
     spmv<T, T, T>(l.A, std::span<const T>(l.z), std::span<T>(l.tmp));
     const auto& c = L[k + 1];
-    tbb::parallel_for(std::size_t(0), c.r.size(), [&](std::size_t I) {  // restriction P^T (r - A z)
-      double s = 0;
+    parallel_indices(c.r.size(), [&](std::size_t I) {  // restriction P^T (r - A z)
+      T s = 0;
       for (auto m = l.member_offsets[I]; m < l.member_offsets[I + 1]; ++m) s += l.r[l.members[m]] - l.tmp[l.members[m]];
-      c.r[I] = static_cast<T>(s);
-    });
+      c.r[I] = s;
+    }, 1024);
     cycle(k + 1, true);
     if (o.cycle == MultigridOptions::Cycle::W) cycle(k + 1, false);
-    tbb::parallel_for(std::size_t(0), l.z.size(), [&](std::size_t i) { l.z[i] += c.z[l.to_coarse[i]]; });  // P e_c
+    parallel_indices(l.z.size(), [&](std::size_t i) { l.z[i] += c.z[l.to_coarse[i]]; });  // P e_c
     for (int s = 0; s < o.post_smoothing; ++s) jacobi(l, false);
   }
 
   void apply(std::span<const double> r, std::span<double> z) const override {
     auto& l = L[0];
-    for (std::size_t i = 0; i < r.size(); ++i) l.r[i] = static_cast<T>(r[i]);
+    parallel_indices(r.size(), [&](std::size_t i) { l.r[i] = static_cast<T>(r[i]); });
     cycle(0, true);
-    for (std::size_t i = 0; i < z.size(); ++i) z[i] = static_cast<double>(l.z[i]);
+    parallel_indices(z.size(), [&](std::size_t i) { z[i] = static_cast<double>(l.z[i]); });
   }
   std::vector<MultigridLevelInfo> levels() const override {
     std::vector<MultigridLevelInfo> v;

@@ -58,7 +58,7 @@ std::optional<SolveStatus> start(const CsrMatrix<double>& A, std::span<const dou
   }
   r.resize(A.rows);
   spmv<double, double, double>(A, std::span<const double>(x.data(), x.size()), r);
-  for (std::size_t i = 0; i < r.size(); ++i) r[i] = b[i] - r[i];
+  parallel_indices(r.size(), [&](std::size_t i) { r[i] = b[i] - r[i]; });
   return std::nullopt;
 }
 
@@ -153,7 +153,7 @@ SolveStatus bicgstab(const CsrMatrix<double>& A, std::span<const double> b, std:
     }
     double beta = (rho_new / rho) * (alpha / omega);
     rho = rho_new;
-    for (std::size_t i = 0; i < n; ++i) p[i] = r[i] + beta * (p[i] - omega * v[i]);
+    parallel_indices(n, [&](std::size_t i) { p[i] = r[i] + beta * (p[i] - omega * v[i]); });
     M.apply(p, y);
     spmv<double, double, double>(A, c(y), v);
     double r0v = dot(c(r0), c(v));
@@ -162,7 +162,7 @@ SolveStatus bicgstab(const CsrMatrix<double>& A, std::span<const double> b, std:
       break;
     }
     alpha = rho / r0v;
-    for (std::size_t i = 0; i < n; ++i) s[i] = r[i] - alpha * v[i];
+    parallel_indices(n, [&](std::size_t i) { s[i] = r[i] - alpha * v[i]; });
     axpy<double>(alpha, c(y), x);
     if (std::sqrt(dot(c(s), c(s))) / nb <= o.tolerance) {
       r = s;
@@ -178,7 +178,7 @@ SolveStatus bicgstab(const CsrMatrix<double>& A, std::span<const double> b, std:
       break;
     }
     axpy<double>(omega, c(zv), x);
-    for (std::size_t i = 0; i < n; ++i) r[i] = s[i] - omega * t[i];
+    parallel_indices(n, [&](std::size_t i) { r[i] = s[i] - omega * t[i]; });
     ++it;
   }
   return finish(A, b, x, it, o.tolerance, reason);

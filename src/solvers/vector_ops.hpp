@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "solvers/csr_matrix.hpp"
@@ -13,15 +14,26 @@ namespace ryushi::solvers {
 
 inline constexpr std::size_t kReductionChunk = 4096;
 
-// y = A x (x may be of another precision: the float preconditioner reads double vectors).
+// y = A x (x may be of another precision). A row sums in double unless matrix and vector are
+// both float: the float multigrid hierarchy then runs at float speed (8 bytes per nonzero read
+// instead of 12, no conversions), and a preconditioner needs no more than float accuracy.
 template <class T, class X, class Y>
 void spmv(const CsrMatrix<T>& A, std::span<const X> x, std::span<Y> y) {
+  using Sum = std::conditional_t<std::is_same_v<T, float> && std::is_same_v<X, float>, float, double>;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, A.rows, 1024), [&](auto r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      double s = 0;
-      for (auto k = A.row_ptr[i]; k < A.row_ptr[i + 1]; ++k) s += double(A.val[k]) * double(x[A.col[k]]);
+      Sum s = 0;
+      for (auto k = A.row_ptr[i]; k < A.row_ptr[i + 1]; ++k) s += Sum(A.val[k]) * Sum(x[A.col[k]]);
       y[i] = static_cast<Y>(s);
     }
+  });
+}
+
+// f(i) for i in [0, n) in parallel, in blocks (one call per block, not per element).
+template <class F>
+void parallel_indices(std::size_t n, F&& f, std::size_t grain = 4096) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain), [&](auto r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) f(i);
   });
 }
 
