@@ -20,14 +20,15 @@ std::string xdmf_document(int D, const std::vector<FrameRecord>& frames) {
     for (auto& field : f.fields) {
       if (field.name == "position") continue;
       const char* type = "Scalar";
+      // Appended piecewise: GCC 12 reports a false -Wrestrict on `" " + std::to_string(..)`.
       std::string dims = std::to_string(f.particles);
       std::string number = "Float\" Precision=\"8";
       if (field.type == ColumnType::Vector) {
         type = "Vector";
-        dims += " " + std::to_string(D);
+        dims.append(" ").append(std::to_string(D));
       } else if (field.type == ColumnType::Tensor) {
         type = "Tensor";
-        dims += " " + std::to_string(D * D);
+        dims.append(" ").append(std::to_string(D * D));
       } else if (field.type == ColumnType::Flags) {
         number = "Int\" Precision=\"4";
       }
