@@ -59,7 +59,7 @@ RunOptions dam_break(const fs::path& out, double spacing, double end) {
 }  // namespace
 
 // Time-averaged over the second half of a 2 s run (100 samples; MPS pressure is noisy from step
-// to step: 3-11% standard deviation at these probes), the probe pressures at four heights must
+// to step: 3-7% standard deviation at these probes), the probe pressures at four heights must
 // lie on the hydrostatic line p = rho g (eta - y): the fitted slope within 1% of rho g, the fitted
 // surface eta within half a spacing of where the water started (mass cannot go anywhere else),
 // and no probe more than 1% of rho g H off the line. Measured at H / l0 = 20: slope 1.0056 rho g,
