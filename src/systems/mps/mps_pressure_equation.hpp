@@ -5,8 +5,8 @@
 // for every particle whose pressure is unknown (fluid and wall particles below the surface).
 // Neighbours on the free surface carry p = 0 (they add to the diagonal only); dummy particles
 // carry no pressure and are left out, as in Koshizuka's MPS. gamma is the source relaxation
-// (0.2 in the paper's dam break). A is symmetric positive definite once any row touches the
-// surface.
+// (0.2 in the paper's dam break). A is symmetric positive definite when every connected group
+// of unknowns touches the surface (a closed, completely filled container would be singular).
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
