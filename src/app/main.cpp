@@ -2,6 +2,8 @@
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
+#include <malloc.h>
+
 #include <cstdio>
 
 #include "app/exit_codes.hpp"
@@ -13,6 +15,13 @@
 
 int main(int argc, char** argv) {
   using namespace ryushi;
+  // Every step frees and reallocates large buffers (neighbour list, pressure matrix, multigrid
+  // hierarchy). glibc serves blocks above its dynamic mmap threshold with fresh, zero-filled
+  // pages each time: measured on the 80,000-particle MPS dam break, the float hierarchy's setup
+  // took 23.8 ms per step instead of 14.5, the whole step 5-7% longer. Blocks up to 32 MiB (the
+  // glibc maximum) now come from the heap and are reused, and freed memory is kept.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
   CLI::App app{"ryushi: particle methods for fluid mechanics (WCSPH, ISPH, MPS, shallow-water MPS)"};
   app.set_version_flag("--version", "ryushi 0.1.0");
   app.require_subcommand(1);
