@@ -1,5 +1,8 @@
 #pragma once
 // Helpers shared by the tests: scratch directories, scene files, CSV and JSON look-ups.
+#include <unistd.h>
+
+#include <atomic>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -77,7 +80,12 @@ struct CommandResult {
   std::string output;
 };
 inline CommandResult run_command(const std::string& cmd) {
-  fs::path log = fs::current_path() / "scratch" / ("cmd_" + std::to_string(std::rand()) + ".log");
+  // ctest runs test cases as parallel processes in one directory: the log name must be unique
+  // across processes (pid) and within one (counter). std::rand() is not: every process starts
+  // from the same seed, and two tests once read each other's output.
+  static std::atomic<int> counter{0};
+  fs::path log = fs::current_path() / "scratch" /
+                 ("cmd_" + std::to_string(::getpid()) + "_" + std::to_string(counter++) + ".log");
   fs::create_directories(log.parent_path());
   int status = std::system((cmd + " > " + log.string() + " 2>&1").c_str());
   int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
