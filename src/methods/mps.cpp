@@ -35,33 +35,14 @@ MpsParameters<D> mps_parameters(const Scene& s) {
 
 template <int D>
 void populate_mps_world(const Scene& s, const MpsParameters<D>& p, World<D>& world) {
-  const double volume = std::pow(s.spacing, D);
   const double g_up = -p.gravity[D - 1];
-  auto particles = scene_particles<D>(s);
-  std::size_t first = world.append(particles.fluid.size(), kFluid);
-  auto& x = world.ensure(components::position);
-  auto& m = world.ensure(components::mass);
-  auto& rho = world.ensure(components::density);
-  auto& pr = world.ensure(components::pressure);
-  world.ensure(components::velocity);
-  for (std::size_t k = 0; k < particles.fluid.size(); ++k) {
-    x[first + k] = particles.fluid[k];
-    m[first + k] = p.rho0 * volume;
-    rho[first + k] = p.rho0;
-    pr[first + k] = s.hydrostatic_init ? p.rho0 * g_up * particles.depth[k] : 0.0;
-  }
-  std::size_t wfirst = world.append(particles.wall.size(), kWall);
-  auto& kind = world.column(components::kind);
-  auto& xw = world.column(components::position);
-  auto& mw = world.column(components::mass);
-  auto& rw = world.column(components::density);
-  for (std::size_t k = 0; k < particles.wall.size(); ++k) {
-    std::size_t i = wfirst + k;
-    if (particles.wall_layer[k] > s.wall_pressure_layers) kind[i] = kDummy;
-    xw[i] = particles.wall[k];
-    mw[i] = p.rho0 * volume;
-    rw[i] = p.rho0;
-  }
+  // Incompressible: density rho0 everywhere; the hydrostatic pressure is the first solve's guess.
+  append_scene_particles<D>(
+      s, p.rho0, world,
+      [&](double depth) {
+        return std::pair{p.rho0, s.hydrostatic_init ? p.rho0 * g_up * depth : 0.0};
+      },
+      [&](int layer) { return layer <= s.wall_pressure_layers ? kWall : kDummy; });
 }
 
 template <int D>

@@ -3,9 +3,12 @@
 // on the lattice (with their depth below the block's top, for hydrostatic starts) and wall
 // containers (with each wall particle's layer, 1 = touching the fluid). Every method fills its
 // world from this one description (and takes the domain and vectors from the scene here).
+#include <cmath>
+#include <utility>
 #include <vector>
 
 #include "ecs/math.hpp"
+#include "ecs/world.hpp"
 #include "scene/scene.hpp"
 #include "systems/neighbour/domain.hpp"
 
@@ -21,6 +24,39 @@ struct SceneParticles {
 
 template <int D>
 SceneParticles<D> scene_particles(const Scene& scene);
+
+// Appends the scene's particles to the world: fluid at rest with (density, pressure) =
+// fluid_state(depth) and mass = density * d^D (each lattice cell holds its fluid), then the wall
+// particles with kind = wall_kind(layer), density rho0 and mass rho0 d^D.
+template <int D, class FluidState, class WallKind>
+void append_scene_particles(const Scene& s, double rho0, World<D>& world, FluidState&& fluid_state,
+                            WallKind&& wall_kind) {
+  const double volume = std::pow(s.spacing, D);
+  auto particles = scene_particles<D>(s);
+  std::size_t first = world.append(particles.fluid.size(), kFluid);
+  auto& x = world.ensure(components::position);
+  auto& m = world.ensure(components::mass);
+  auto& rho = world.ensure(components::density);
+  auto& pr = world.ensure(components::pressure);
+  world.ensure(components::velocity);
+  for (std::size_t k = 0; k < particles.fluid.size(); ++k) {
+    std::size_t i = first + k;
+    x[i] = particles.fluid[k];
+    auto [density, pressure] = fluid_state(particles.depth[k]);
+    rho[i] = density;
+    pr[i] = pressure;
+    m[i] = density * volume;
+  }
+  std::size_t wfirst = world.append(particles.wall.size(), kWall);
+  auto& kind = world.column(components::kind);
+  for (std::size_t k = 0; k < particles.wall.size(); ++k) {
+    std::size_t i = wfirst + k;
+    kind[i] = wall_kind(particles.wall_layer[k]);
+    x[i] = particles.wall[k];
+    m[i] = rho0 * volume;
+    rho[i] = rho0;
+  }
+}
 
 template <int D>
 Vec<D> scene_vector(const std::vector<double>& v) {

@@ -35,32 +35,16 @@ WcsphParameters<D> wcsph_parameters(const Scene& s) {
 
 template <int D>
 void populate_world(const Scene& s, const WcsphParameters<D>& p, World<D>& world) {
-  const double volume = std::pow(s.spacing, D);
   const double g_up = -p.gravity[D - 1];  // gravity along the vertical (last) axis
-  auto particles = scene_particles<D>(s);
-  std::size_t first = world.append(particles.fluid.size(), kFluid);
-  auto& x = world.ensure(components::position);
-  auto& m = world.ensure(components::mass);
-  auto& rho = world.ensure(components::density);
-  auto& pr = world.ensure(components::pressure);
-  world.ensure(components::velocity);
-  for (std::size_t k = 0; k < particles.fluid.size(); ++k) {
-    std::size_t i = first + k;
-    x[i] = particles.fluid[k];
-    double pressure = s.hydrostatic_init ? p.rho0 * g_up * particles.depth[k] : 0.0;
-    rho[i] = p.density(pressure);
-    pr[i] = p.pressure(rho[i]);
-    m[i] = rho[i] * volume;  // the lattice volume d^D holds the (compressed) fluid
-  }
-  std::size_t wfirst = world.append(particles.wall.size(), kWall);
-  auto& xw = world.column(components::position);
-  auto& mw = world.column(components::mass);
-  auto& rw = world.column(components::density);
-  for (std::size_t k = 0; k < particles.wall.size(); ++k) {
-    xw[wfirst + k] = particles.wall[k];
-    mw[wfirst + k] = p.rho0 * volume;
-    rw[wfirst + k] = p.rho0;
-  }
+  // Hydrostatic start: the density that the equation of state maps to rho0 g depth, so the
+  // column starts in equilibrium (mass = that compressed density times d^D).
+  append_scene_particles<D>(
+      s, p.rho0, world,
+      [&](double depth) {
+        double rho = p.density(s.hydrostatic_init ? p.rho0 * g_up * depth : 0.0);
+        return std::pair{rho, p.pressure(rho)};
+      },
+      [](int) { return kWall; });
 }
 
 template <int D>

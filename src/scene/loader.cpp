@@ -413,7 +413,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       if (thick + 1e-12 < sc.support_radius()) {
         std::ostringstream m;
         m << "[[wall]] #" << i << ": " << w.layers << " layers (" << thick << " m) do not cover the support radius "
-          << sc.support_radius() << " m; use layers >= " << std::ceil(sc.support_radius() / sc.spacing - 1e-9);
+          << sc.support_radius() << " m; use layers >= " << covering;
         val.fail(root["wall"][i]["layers"].node() ? root["wall"][i]["layers"].node() : &(*arr)[i], path_of("wall", i, "layers"), m.str());
       }
       const int reach = static_cast<int>(std::floor(sc.support_radius() / sc.spacing + 1e-9));

@@ -35,7 +35,6 @@ class MpsCollision final : public System<D> {
     const double dt = ctx.read(resources::dt);
     const auto& nl = ctx.read(neighbours_resource);
     const auto& domain = ctx.read(domain_resource<D>);
-    const bool periodic = domain.any_periodic();
     auto kind = ctx.read(components::kind);
     auto x = ctx.write(components::position);
     auto v = ctx.write(components::velocity);
@@ -45,7 +44,7 @@ class MpsCollision final : public System<D> {
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       Vec<D> change = Vec<D>::Zero();
       for (auto j : nl.of(i)) {
-        Vec<D> r = periodic ? domain.displacement(x[j], x[i]) : Vec<D>(x[j] - x[i]);
+        Vec<D> r = domain.offset(x[i], x[j]);
         double r2 = r.squaredNorm();
         if (r2 >= (kind[j] == kFluid ? fluid2 : wall2) || r2 == 0) continue;
         Vec<D> n = r / std::sqrt(r2);
@@ -59,7 +58,7 @@ class MpsCollision final : public System<D> {
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       v[i] += dv[i];
       x[i] += dt * dv[i];
-      if (periodic) domain.wrap(x[i]);
+      domain.wrap(x[i]);
     });
   }
 

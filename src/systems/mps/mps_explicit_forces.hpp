@@ -29,7 +29,6 @@ class MpsExplicitForces final : public System<D> {
     auto v = ctx.write(components::velocity);
     auto a = ctx.write(components::acceleration);
     const double viscous = p_.nu * p_.laplacian_coefficient();
-    const bool periodic = domain.any_periodic();
     // Gather every acceleration from u^k first, then move: a particle never reads a neighbour's
     // already-updated velocity.
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {
@@ -37,7 +36,7 @@ class MpsExplicitForces final : public System<D> {
       if (viscous > 0)
         for (auto j : nl.of(i)) {
           if (kind[j] == kDummy) continue;
-          Vec<D> r = periodic ? domain.displacement(x[j], x[i]) : Vec<D>(x[j] - x[i]);
+          Vec<D> r = domain.offset(x[i], x[j]);
           lap += (v[j] - v[i]) * p_.weight.w(r.norm());
         }
       a[i] = viscous * lap + p_.gravity;
@@ -45,7 +44,7 @@ class MpsExplicitForces final : public System<D> {
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       v[i] += dt * a[i];
       x[i] += dt * v[i];
-      if (periodic) domain.wrap(x[i]);
+      domain.wrap(x[i]);
     });
   }
 

@@ -24,7 +24,6 @@ class MpsNumberDensity final : public System<D> {
   void run(SystemContext<D>& ctx) override {
     const auto& nl = ctx.read(neighbours_resource);
     const auto& domain = ctx.read(domain_resource<D>);
-    const bool periodic = domain.any_periodic();
     auto x = ctx.read(components::position);
     auto kind = ctx.read(components::kind);
     auto n = ctx.write(components::number_density);
@@ -39,7 +38,7 @@ class MpsNumberDensity final : public System<D> {
         }
         double sum = 0;
         for (auto j : nl.of(i)) {
-          Vec<D> r = periodic ? domain.displacement(x[j], x[i]) : Vec<D>(x[j] - x[i]);
+          Vec<D> r = domain.offset(x[i], x[j]);
           sum += p_.weight.w(r.norm());
         }
         n[i] = sum;

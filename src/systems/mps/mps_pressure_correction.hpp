@@ -28,36 +28,35 @@ class MpsPressureCorrection final : public System<D> {
     const double dt = ctx.read(resources::dt);
     const auto& nl = ctx.read(neighbours_resource);
     const auto& domain = ctx.read(domain_resource<D>);
-    const bool periodic = domain.any_periodic();
     auto p = ctx.read(components::pressure);
     auto kind = ctx.read(components::kind);
     auto x = ctx.write(components::position);
     auto v = ctx.write(components::velocity);
     auto grad = ctx.write(components::pressure_gradient);
-    const double re = p_.weight.support();
     auto pressure = [&](std::size_t j) { return p_.clamp_negative_pressure ? std::max(p[j], 0.0) : p[j]; };
-    auto rij = [&](std::size_t i, std::size_t j) {
-      return periodic ? domain.displacement(x[j], x[i]) : Vec<D>(x[j] - x[i]);
-    };
+    // One pass over the pairs: sum_j (p_j - p^) e_j = sum_j p_j e_j - p^ sum_j e_j with
+    // e_j = r_ij w_ij / |r_ij|^2, so the local minimum p^ is applied after the loop.
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       double low = pressure(i);
-      for (auto j : nl.of(i))
-        if (kind[j] != kDummy && rij(i, j).norm() < re) low = std::min(low, pressure(j));
-      Vec<D> g = Vec<D>::Zero();
+      Vec<D> weighted = Vec<D>::Zero(), directions = Vec<D>::Zero();
       for (auto j : nl.of(i)) {
         if (kind[j] == kDummy) continue;
-        Vec<D> r = rij(i, j);
+        Vec<D> r = domain.offset(x[i], x[j]);
         double w = p_.weight.w(r.norm());
-        if (w > 0) g += (pressure(j) - low) / r.squaredNorm() * w * r;
+        if (w <= 0) continue;
+        Vec<D> e = w / r.squaredNorm() * r;
+        low = std::min(low, pressure(j));
+        weighted += pressure(j) * e;
+        directions += e;
       }
-      grad[i] = (D / p_.n0) * g;
+      grad[i] = (D / p_.n0) * (weighted - low * directions);
     });
     const double scale = dt / p_.rho0;
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       Vec<D> dv = -scale * grad[i];
       v[i] += dv;
       x[i] += dt * dv;
-      if (periodic) domain.wrap(x[i]);
+      domain.wrap(x[i]);
     });
   }
 

@@ -38,7 +38,6 @@ class MpsPressureEquation final : public System<D> {
     const double dt = ctx.read(resources::dt);
     const auto& nl = ctx.read(neighbours_resource);
     const auto& domain = ctx.read(domain_resource<D>);
-    const bool periodic = domain.any_periodic();
     auto x = ctx.read(components::position);
     auto n = ctx.read(components::number_density);
     auto role = ctx.read(components::pressure_role);
@@ -54,9 +53,6 @@ class MpsPressureEquation final : public System<D> {
         sys.particle_of_row.push_back(static_cast<std::uint32_t>(i));
       }
     const std::size_t rows = sys.particle_of_row.size();
-    auto rij = [&](std::size_t i, std::size_t j) {
-      return periodic ? domain.displacement(x[j], x[i]) : Vec<D>(x[j] - x[i]);
-    };
     // Pass 1: entries per row (the diagonal plus unknown neighbours inside r_e).
     auto& A = sys.A;
     A.rows = A.cols = rows;
@@ -66,7 +62,7 @@ class MpsPressureEquation final : public System<D> {
         const std::size_t i = sys.particle_of_row[r];
         std::uint64_t count = 1;
         for (auto j : nl.of(i))
-          if (row_of_[j] != kNoRow && p_.weight.w(rij(i, j).norm()) > 0) ++count;
+          if (row_of_[j] != kNoRow && p_.weight.w(domain.offset(x[i], x[j]).norm()) > 0) ++count;
         A.row_ptr[r + 1] = count;
       }
     });
@@ -86,7 +82,7 @@ class MpsPressureEquation final : public System<D> {
         double diagonal = 0;
         for (auto j : nl.of(i)) {
           if (role[j] == kPressureNone) continue;
-          double w = p_.weight.w(rij(i, j).norm());
+          double w = p_.weight.w(domain.offset(x[i], x[j]).norm());
           if (w <= 0) continue;
           diagonal += c * w;
           if (row_of_[j] != kNoRow) entries.emplace_back(row_of_[j], -c * w);

@@ -29,6 +29,11 @@ struct Domain {
     }
     return d;
   }
+  // x_to - x_from: the minimum image on periodic axes, the plain difference otherwise (r_ij =
+  // x_j - x_i in the operators' convention is offset(x[i], x[j])).
+  Vec<D> offset(const Vec<D>& from, const Vec<D>& to) const {
+    return any_periodic() ? displacement(to, from) : Vec<D>(to - from);
+  }
   // Brings a position back into the box on periodic axes.
   void wrap(Vec<D>& x) const {
     for (int a = 0; a < D; ++a) {

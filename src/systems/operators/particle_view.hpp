@@ -25,9 +25,7 @@ struct ParticleView {
   Domain<D> domain;
 
   std::size_t size() const { return x.size(); }
-  Vec<D> r(std::size_t i, std::size_t j) const {
-    return domain.any_periodic() ? domain.displacement(x[j], x[i]) : Vec<D>(x[j] - x[i]);
-  }
+  Vec<D> r(std::size_t i, std::size_t j) const { return domain.offset(x[i], x[j]); }
   Vec<D> grad_w(const Vec<D>& r) const { return -r * kernel.grad_factor(r.norm()); }
 };
 
