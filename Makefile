@@ -5,9 +5,12 @@ JOBS       ?= $(shell nproc)
 PACKAGES   := cmake g++ make pkg-config libtbb-dev libeigen3-dev libhdf5-dev libspdlog-dev \
               doctest-dev libtomlplusplus-dev libcli11-dev libbenchmark-dev
 PY_PACKAGES := python3-numpy python3-h5py python3-matplotlib
+# The real-client test: ParaView's own readers, rendering under a virtual X display; ffmpeg
+# for `ryushi render --movie`.
+PV_PACKAGES := paraview python3-paraview xvfb xauth ffmpeg
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps py-deps build run test test-sanitize bench plots docs clean
+.PHONY: all deps py-deps pv-deps build run test test-paraview test-sanitize bench plots docs clean
 
 all: build
 
@@ -24,15 +27,28 @@ py-deps:
 	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing; \
 	fi
 
+pv-deps:
+	@missing=""; for p in $(PV_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
 build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 	cmake --build $(BUILD) -j$(JOBS)
 
-run: build
+# The run, then its last frame as a picture (out/dam_break_2d/render/pressure_NNNNN.png).
+run: build py-deps
 	$(BUILD)/ryushi run scenes/dam_break_2d.toml --out out/dam_break_2d
+	$(BUILD)/ryushi render out/dam_break_2d --frames last
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
+
+# Short WCSPH, MPS and 3D runs opened in ParaView's XDMF readers, and drawn by `ryushi render`
+# (tools/test_paraview.sh).
+test-paraview: build py-deps pv-deps
+	tools/test_paraview.sh $(BUILD)
 
 # Same tests under AddressSanitizer + UndefinedBehaviorSanitizer.
 test-sanitize: deps

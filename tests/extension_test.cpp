@@ -3,10 +3,10 @@
 // its shape with s^2(t) = s0^2 + 2 kappa t; the total sum m_i phi_i is conserved exactly by the
 // antisymmetric pair form.
 #include <doctest/doctest.h>
-#include <hdf5.h>
 
 #include "app/exit_codes.hpp"
 #include "app/run.hpp"
+#include "h5_read.hpp"
 #include "test_util.hpp"
 
 using namespace ryushi;
@@ -14,29 +14,17 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<double> read_dataset(const fs::path& file, const std::string& name) {
-  hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  hid_t d = H5Dopen2(f, name.c_str(), H5P_DEFAULT);
-  hid_t s = H5Dget_space(d);
-  std::vector<double> v(H5Sget_simple_extent_npoints(s));
-  H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
-  H5Sclose(s);
-  H5Dclose(d);
-  H5Fclose(f);
-  return v;
-}
-
 struct Moments {
   double total, variance;
 };
 
 Moments moments(const fs::path& frame, double cx, double cy) {
-  auto x = read_dataset(frame, "position");
-  auto phi = read_dataset(frame, "scalar");
-  auto m = read_dataset(frame, "mass");
+  auto x = test::read_dataset(frame, "position").values;  // N x 3, z = 0 in 2D
+  auto phi = test::read_dataset(frame, "scalar").values;
+  auto m = test::read_dataset(frame, "mass").values;
   double total = 0, second = 0;
   for (std::size_t i = 0; i < phi.size(); ++i) {
-    double dx = x[2 * i] - cx, dy = x[2 * i + 1] - cy;
+    double dx = x[3 * i] - cx, dy = x[3 * i + 1] - cy;
     total += m[i] * phi[i];
     second += m[i] * phi[i] * (dx * dx + dy * dy);
   }

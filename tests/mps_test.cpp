@@ -1,7 +1,6 @@
 // The MPS method and the pressure solver inside the flow graph (issue 4: "multigrid setup" and
 // "linear solve" as systems, [solver] scene keys, `ryushi run --dump-matrix`).
 #include <doctest/doctest.h>
-#include <hdf5.h>
 
 #include <cmath>
 #include <map>
@@ -10,6 +9,7 @@
 #include "app/run.hpp"
 #include "solvers/bucket_multigrid.hpp"
 #include "solvers/matrix_market.hpp"
+#include "h5_read.hpp"
 #include "test_util.hpp"
 
 using namespace ryushi;
@@ -17,32 +17,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<double> read_dataset(const fs::path& file, const std::string& name) {
-  hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  REQUIRE(f >= 0);
-  hid_t d = H5Dopen2(f, name.c_str(), H5P_DEFAULT);
-  REQUIRE(d >= 0);
-  hid_t s = H5Dget_space(d);
-  std::vector<hsize_t> dims(H5Sget_simple_extent_ndims(s));
-  H5Sget_simple_extent_dims(s, dims.data(), nullptr);
-  std::size_t n = 1;
-  for (auto k : dims) n *= k;
-  std::vector<double> v(n);
-  H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
-  H5Sclose(s);
-  H5Dclose(d);
-  H5Fclose(f);
-  return v;
-}
-
 // Positions (2D) and pressures of one frame, keyed by particle id.
 struct Frame {
   std::map<long, std::array<double, 3>> by_id;  // x, y, p
 };
 Frame read_frame(const fs::path& file) {
-  auto id = read_dataset(file, "id"), x = read_dataset(file, "position"), p = read_dataset(file, "pressure");
+  auto id = test::read_dataset(file, "id").values, x = test::read_dataset(file, "position").values,
+       p = test::read_dataset(file, "pressure").values;
   Frame f;
-  for (std::size_t i = 0; i < id.size(); ++i) f.by_id[std::lround(id[i])] = {x[2 * i], x[2 * i + 1], p[i]};
+  for (std::size_t i = 0; i < id.size(); ++i) f.by_id[std::lround(id[i])] = {x[3 * i], x[3 * i + 1], p[i]};
   return f;
 }
 
@@ -160,6 +143,39 @@ TEST_CASE("mps: dam break runs past the far-wall impact and conserves mass") {
     report += std::to_string(100 * (z / Z - 1)) + "% ";
   }
   MESSAGE("front vs Martin & Moyce (T = 0.83, 1.22, 2.00, 2.55): ", report);
+}
+
+// A step shortened to land on an output or the end time must not change the pressure the frame
+// shows: the source gamma rho0 (n* - n0)/(n0 dt^2) holds the compression of a full step, and the
+// old driver divided it by the shortened dt^2 (an end-time frame had 71% of the fluid negative,
+// mean -889 Pa against +1178 Pa one frame before). Fixed dt 0.8 ms, a/l0 = 20. The reference is
+// the same run's frames at full steps around t = 0.1 s; the shortened run ends at 0.1 s + dt/100
+// with two steps of 0.505 dt. Its pressure must differ from the full-step frame at 0.1 s by no
+// more than 1.5 times what one full step changes it (MPS pressure moves 5-15% per step).
+TEST_CASE("mps: a frame after shortened steps shows the pressure of a full step") {
+  const double dt = 8e-4;
+  auto full = test::scratch("mps_full_steps"), shortened = test::scratch("mps_shortened_steps");
+  auto opt = dam_break(full, 0.0125, 0.1 + dt);
+  opt.sets = {"particles.spacing=0.0125", "time.dt=8e-4", "output.interval=8e-4"};
+  REQUIRE(run_scene(opt) == kExitDone);
+  auto opt_short = dam_break(shortened, 0.0125, 0.1 + 0.01 * dt);
+  opt_short.sets = {"particles.spacing=0.0125", "time.dt=8e-4", "output.interval=1"};
+  REQUIRE(run_scene(opt_short) == kExitDone);
+  CHECK(test::json_number(test::read_text(shortened / "summary.json"), "steps") == 126);
+
+  auto before = read_frame(full / "frames" / "frame_00124.h5"), at = read_frame(full / "frames" / "frame_00125.h5"),
+       after = read_frame(full / "frames" / "frame_00126.h5"), end = read_frame(shortened / "frames" / "frame_00001.h5");
+  auto relative_l2 = [&](const Frame& a) {
+    double diff = 0, norm = 0;
+    for (auto& [id, u] : at.by_id) {
+      diff += std::pow(a.by_id.at(id)[2] - u[2], 2);
+      norm += u[2] * u[2];
+    }
+    return std::sqrt(diff / norm);
+  };
+  double step_change = std::max(relative_l2(before), relative_l2(after)), shortened_change = relative_l2(end);
+  MESSAGE("pressure change: one full step ", step_change, ", two half steps ", shortened_change);
+  CHECK(shortened_change <= 1.5 * step_change);
 }
 
 TEST_CASE("mps: the profile shows the preconditioner setup and the linear solve apart") {

@@ -3,6 +3,7 @@
 
 #include "app/exit_codes.hpp"
 #include "app/run.hpp"
+#include "h5_read.hpp"
 #include "test_util.hpp"
 
 using namespace ryushi;
@@ -64,16 +65,29 @@ TEST_CASE("output: frames, xdmf, summary, profile, probes and trace are written 
   REQUIRE(fs::exists(f2));
   auto n = dataset_dims(f2, "pressure");
   REQUIRE(n.size() == 1);
-  CHECK(dataset_dims(f2, "position") == std::vector<hsize_t>{n[0], 2});
-  CHECK(dataset_dims(f2, "velocity") == std::vector<hsize_t>{n[0], 2});
-  CHECK(dataset_dims(f2, "acceleration") == std::vector<hsize_t>{n[0], 2});
-  for (auto name : {"density", "kind", "id", "mass"}) CHECK(dataset_dims(f2, name) == n);
+  // 2D vectors are stored with 3 components (z = 0), as ParaView's filters expect.
+  CHECK(dataset_dims(f2, "position") == std::vector<hsize_t>{n[0], 3});
+  CHECK(dataset_dims(f2, "velocity") == std::vector<hsize_t>{n[0], 3});
+  CHECK(dataset_dims(f2, "acceleration") == std::vector<hsize_t>{n[0], 3});
+  for (auto name : {"density", "kind", "id", "mass", "connectivity"}) CHECK(dataset_dims(f2, name) == n);
+  auto z = test::read_dataset(f2, "position").values;
+  double max_abs_z = 0;
+  for (std::size_t i = 0; i < n[0]; ++i) max_abs_z = std::max(max_abs_z, std::abs(z[3 * i + 2]));
+  CHECK(max_abs_z == 0.0);
+  auto vertices = test::read_dataset(f2, "connectivity").values;
+  CHECK(vertices.front() == 0);
+  CHECK(vertices.back() == double(n[0] - 1));
+  // Frames land on the output times: the step that crosses one is shortened.
   CHECK(time_attribute(f0) == 0.0);
-  CHECK(time_attribute(f2) == doctest::Approx(0.02));
+  CHECK(time_attribute(out / "frames" / "frame_00001.h5") == 0.01);
+  CHECK(time_attribute(f2) == 2 * 0.01);
   CHECK(count_files(out, ".tmp") == 0);
 
   auto xdmf = test::read_text(out / "particles.xdmf");
   CHECK(xdmf.find("frames/frame_00002.h5:/position") != std::string::npos);
+  CHECK(xdmf.find("frames/frame_00002.h5:/connectivity") != std::string::npos);
+  CHECK(xdmf.find("<Time Value=\"0.01\"/>") != std::string::npos);
+  CHECK(xdmf.find("GeometryType=\"XYZ\"") != std::string::npos);
   CHECK(xdmf.find("CollectionType=\"Temporal\"") != std::string::npos);
 
   auto summary = test::read_text(out / "summary.json");

@@ -1,4 +1,4 @@
-// The `ryushi` command line: run, check and keys. Exit codes: app/exit_codes.hpp.
+// The `ryushi` command line: run, check, keys, render, solve and the verification commands. Exit codes: app/exit_codes.hpp.
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "app/exit_codes.hpp"
+#include "app/render.hpp"
 #include "app/run.hpp"
 #include "app/solve.hpp"
 #include "scene/schema.hpp"
@@ -86,6 +87,16 @@ int main(int argc, char** argv) {
   solve_cmd->add_option("--max-iterations", solve.max_iterations, "Iteration cap")->check(CLI::PositiveNumber);
   solve_cmd->add_option("--bucket-width", solve.bucket_width, "Level-1 bucket width (default: longest coupling)");
 
+  RenderOptions render;
+  auto* render_cmd = app.add_subcommand("render", "PNG pictures and an MP4 of a run's frames (tools/render.py).");
+  render_cmd->add_option("out", render.out_dir, "Output directory of a run")->required();
+  render_cmd->add_option("--field", render.field, "Field to colour by (default pressure; vectors by magnitude)");
+  render_cmd->add_option("--frames", render.frames, "all, last or frame numbers 0,10,20 (default all)");
+  render_cmd->add_flag("--movie", render.movie, "Also write FIELD.mp4 of every frame (ffmpeg)");
+  render_cmd->add_option("--slice", render.slice, "3D: keep particles within a spacing of AXIS=VALUE (default: projection)");
+  render_cmd->add_option("--range", render.range, "Colour range LO,HI (default: 1st-99th percentile)");
+  render_cmd->add_option("--dest", render.dest, "Where the pictures go (default OUT/render)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -130,6 +141,7 @@ int main(int argc, char** argv) {
     return kExitDone;
   }
   if (*solve_cmd) return solve_command(solve);
+  if (*render_cmd) return render_command(render);
   if (*keys_cmd) {
     std::printf("%s", schema_markdown().c_str());
     return kExitDone;

@@ -152,6 +152,7 @@ class Runner {
                          "' in this pipeline; available: " + list);
       }
     res_.ensure(resources::dt) = scene_.fixed_dt > 0 ? scene_.fixed_dt : method.first_dt;
+    res_.ensure(resources::dt_chosen) = res_.get(resources::dt);
     HealthCheck<D> h;
     h.density_may_vanish = density_may_vanish_;
     h.run(world_, params_.domain);
@@ -231,10 +232,13 @@ class Runner {
       throw NumericalFailure("step " + std::to_string(step_) + " (t = " + fmt(time_) + " s): time step " +
                              fmt(dt) + " s fell below time.dt_min = " + fmt(scene_.dt_min) +
                              " s (system 'time_step_control')");
-    // Land on time.end without a sliver of a last step: when less than two steps remain, split
-    // the rest evenly (MPS's pressure source scales as 1/dt^2, so a tiny step is a spike).
-    const double rest = scene_.end_time - time_;
-    if (dt >= rest)
+    // Land exactly on the next output time (or time.end) without a sliver of a last step: when
+    // less than two steps remain, split the rest evenly. dt_chosen keeps the control's step.
+    res_.get(resources::dt_chosen) = dt;
+    const double target = std::min(next_output_, scene_.end_time);
+    const double rest = target - time_;
+    const bool lands = dt * (1 + 1e-9) >= rest;  // a fixed dt that divides the interval lands
+    if (lands)
       dt = rest;
     else if (2 * dt > rest)
       dt = 0.5 * rest;
@@ -249,7 +253,7 @@ class Runner {
       throw NumericalFailure("step " + std::to_string(step_) + ": " + e.what());
     }
     profiler_.add_step_time(std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
-    time_ += dt_used_;
+    time_ = lands ? target : time_ + dt_used_;  // frame times exactly as asked, no round-off
     res_.get(resources::time) = time_;
     ++step_;
     Profiler::Scope t(profiler_, slot_health_);
@@ -271,7 +275,7 @@ class Runner {
     next_probe_ = (std::floor(time_ / scene_.probe_interval + 1e-9) + 1) * scene_.probe_interval;
     if (scene_.probes.empty()) return;
     Profiler::Scope t(profiler_, slot_probes_);
-    auto values = sample_probes<D>(scene_.probes, world_, params_.kernel, scene_.spacing);
+    auto values = sample_probes<D>(scene_.probes, world_, params_.kernel, scene_.spacing, params_.rho0, params_.domain);
     values.insert(values.begin(), time_);
     probe_rows_.push_back(std::move(values));
   }
@@ -283,7 +287,7 @@ class Runner {
     std::snprintf(name, sizeof name, "frames/frame_%05zu.h5", frames_.size());
     auto fields = write_frame<D>(out_ / name, world_, scene_.output_fields, time_, step_);
     frames_.push_back({name, time_, world_.size(), fields});
-    write_text_atomic(out_ / "particles.xdmf", xdmf_document(D, frames_));
+    write_text_atomic(out_ / "particles.xdmf", xdmf_document(frames_));
     if (!scene_.probes.empty()) write_text_atomic(out_ / "probes.csv", probes_csv(scene_.probes, probe_rows_));
     write_summary("running", "");
   }

@@ -54,6 +54,10 @@ class Resources {
 // Resources every method shares.
 namespace resources {
 inline constexpr Resource<double> dt{"dt"};
+// The step the time-step control chose, before the driver shortened dt to land on an output or
+// the end time. A projection whose pressure scales with 1/dt^2 scales it with this one, so a
+// shortened step does not change the pressure (only how much of it the step applies).
+inline constexpr Resource<double> dt_chosen{"dt_chosen"};
 inline constexpr Resource<double> time{"time"};
 inline constexpr Resource<long long> step{"step"};  // steps completed before this one
 }  // namespace resources

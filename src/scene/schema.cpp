@@ -100,7 +100,7 @@ std::vector<SectionSpec> build() {
                 ranged({"bottom_smoothing", K::Integer, "sweeps", "2", "Jacobi sweeps on the coarsest level."}, 1, 64),
                 ranged({"bottom_size", K::Integer, "rows", "64", "A level with at most this many rows is the coarsest. The BMG paper's 1024 suits a million unknowns; at the few thousand of a small scene it leaves a barely coarsened bottom that two Jacobi sweeps do not solve (2D dam break, 3,200 particles: 49 CG iterations per solve at 1024, 23 at 256, 17 at 64)."}, 1, std::nullopt)}});
   s.push_back({"output", false, false, "What is written to the output directory.",
-               {non_negative("interval", "s", "(end / 20)", "Simulated time between frames (frame 0 is the initial state)."),
+               {non_negative("interval", "s", "(end / 20)", "Simulated time between frames (frame 0 is the initial state). The step that crosses a frame time is shortened to land on it, so frame k is at exactly k * interval."),
                 {"fields", K::StringList, "", "[]",
                  "Extra per-particle fields to write besides position, velocity, pressure, density, kind, id (e.g. \"acceleration\", \"density_rate\", \"mass\")."},
                 non_negative("probe_interval", "s", "(interval / 10)", "Simulated time between probe samples in probes.csv.")}});
@@ -114,9 +114,9 @@ std::vector<SectionSpec> build() {
                 {"open_top", K::Bool, "", "true", "Leave the upper side (last axis) open."}}});
   s.push_back({"probe", true, false, "Measurements written to probes.csv (one column each).",
                {{"name", K::String, "", "", "Column name.", true},
-                choice("type", "", "pressure: kernel-interpolated (Shepard) fluid pressure at `position`; surge_front: max x of fluid particles + d/2; water_height: max height of fluid particles within d of `position` horizontally (+ d/2).",
+                choice("type", "", "pressure: kernel-interpolated (Shepard) fluid pressure at `position`; surge_front: max x of fluid particles + d/2; water_height: surface elevation of the water column standing on `position` (where the kernel-interpolated fill fraction, walls discounted, first falls below 1/2 going up; drops and wall films above a gap do not count; docs/output.md).",
                        {"pressure", "surge_front", "water_height"}, true),
-                {"position", K::Vector, "m", "", "Where to measure (pressure, water_height; the vertical component is ignored for water_height)."}}});
+                {"position", K::Vector, "m", "", "Where to measure (pressure; for water_height the base of the vertical line, which reads this height when dry)."}}});
   s.push_back({"systems", true, false,
                "Registered systems added to the method's pipeline; the scheduler places them by their declared access. Keys besides `name` are the system's parameters (see below).",
                {{"name", K::String, "", "", "Registered system name.", true}}});

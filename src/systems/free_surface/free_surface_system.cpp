@@ -2,7 +2,8 @@
 //   [[systems]]
 //   name = "free_surface_detection"
 //   rule = "isph2"        # marrone | isph2 | mps
-// and get the per-particle columns `free_surface` (1 on the surface) and `surface_normal`.
+// and get the per-particle columns `free_surface` (1 on the surface) and `surface_normal`;
+// with `moment_matrix = true` also the tensor `moment_matrix` (M_i, the inverse of L_i).
 #include "methods/system_registry.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/free_surface/free_surface_detection.hpp"
@@ -11,6 +12,7 @@ namespace ryushi {
 
 inline constexpr Component<Flags> free_surface_flag{"free_surface"};
 inline constexpr Component<Vector> surface_normal_component{"surface_normal"};
+inline constexpr Component<Tensor> moment_matrix_component{"moment_matrix"};
 
 template <int D>
 class FreeSurfaceDetection final : public System<D> {
@@ -18,13 +20,16 @@ class FreeSurfaceDetection final : public System<D> {
   FreeSurfaceDetection(const toml::table& params, const WcsphParameters<D>& physics)
       : physics_(physics), rule_(free_surface_rule(*params["rule"].value<std::string>())) {
     p_.beta = *params["beta"].value<double>();
+    write_moments_ = *params["moment_matrix"].value<bool>();
     if (rule_ == FreeSurfaceRule::Mps) n0_ = mps_reference<D>(physics_.kernel, physics_.spacing).n0;
   }
   std::string name() const override { return "free_surface_detection"; }
   Access access() const override {
-    return Access{}
-        .read(components::position, components::mass, components::density, components::kind, neighbours_resource)
-        .write(free_surface_flag, surface_normal_component);
+    auto a = Access{}
+                 .read(components::position, components::mass, components::density, components::kind, neighbours_resource)
+                 .write(free_surface_flag, surface_normal_component);
+    if (write_moments_) a.write(moment_matrix_component);
+    return a;
   }
   void run(SystemContext<D>& ctx) override {
     auto m = ctx.read(components::mass);
@@ -40,6 +45,10 @@ class FreeSurfaceDetection final : public System<D> {
       flag[i] = r.surface;
       normal[i] = r.normal;
     });
+    if (write_moments_) {
+      auto moments = ctx.write(moment_matrix_component);
+      for_each_of_kind(ctx.read(components::kind), kFluid, [&](std::size_t i) { moments[i] = moment_matrix(view, i); });
+    }
   }
 
  private:
@@ -47,6 +56,7 @@ class FreeSurfaceDetection final : public System<D> {
   FreeSurfaceRule rule_;
   FreeSurfaceParameters p_;
   double n0_ = 0;
+  bool write_moments_ = false;
   std::vector<double> volume_;
 };
 
@@ -63,10 +73,14 @@ KeySpec beta_key() {
   k.min_exclusive = true;
   return k;
 }
+KeySpec moments_key() {
+  return {"moment_matrix", KeyType::Bool, "", "false",
+          "Also write the moment matrix M_i (the inverse of the correction matrix L_i) as the tensor `moment_matrix`."};
+}
 }  // namespace
 
 RYUSHI_REGISTER_SYSTEM(FreeSurfaceDetection, "free_surface_detection",
                        "Flags free-surface fluid particles (`free_surface` = 1) and writes their outward unit normal (`surface_normal`).",
-                       {rule_key(), beta_key()});
+                       {rule_key(), beta_key(), moments_key()});
 
 }  // namespace ryushi

@@ -2,6 +2,8 @@
 
 #include <hdf5.h>
 
+#include <cstdint>
+#include <numeric>
 #include <stdexcept>
 
 namespace ryushi {
@@ -39,6 +41,25 @@ void write_attribute(hid_t file, const char* name, hid_t type, T value) {
   check(H5Awrite(attr.id, type, &value), std::string("writing attribute ") + name);
 }
 
+// Vectors and tensors as 3 and 3 x 3 components in every dimension (z = 0 in 2D): ParaView's
+// glyphs, Calculator and tensor filters expect them so. Tensors row-major: [i][a][b] = M(a, b).
+template <int D>
+std::vector<double> padded_vectors(const std::vector<Vec<D>>& v) {
+  std::vector<double> out(3 * v.size(), 0.0);
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (int a = 0; a < D; ++a) out[3 * i + a] = v[i][a];
+  return out;
+}
+
+template <int D>
+std::vector<double> padded_tensors(const std::vector<Mat<D>>& m) {
+  std::vector<double> out(9 * m.size(), 0.0);
+  for (std::size_t i = 0; i < m.size(); ++i)
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b) out[9 * i + 3 * a + b] = m[i](a, b);
+  return out;
+}
+
 }  // namespace
 
 template <int D>
@@ -61,18 +82,27 @@ std::vector<FieldInfo> write_frame(const std::filesystem::path& path, const Worl
         case ColumnType::Scalar:
           write_dataset(file.id, name, H5T_NATIVE_DOUBLE, world.column(Component<Scalar>{name}).data(), {n});
           break;
-        case ColumnType::Vector:
-          write_dataset(file.id, name, H5T_NATIVE_DOUBLE, world.column(Component<Vector>{name}).data()->data(), {n, D});
+        case ColumnType::Vector: {
+          auto padded = padded_vectors<D>(world.column(Component<Vector>{name}));
+          write_dataset(file.id, name, H5T_NATIVE_DOUBLE, padded.data(), {n, 3});
           break;
-        case ColumnType::Tensor:
-          write_dataset(file.id, name, H5T_NATIVE_DOUBLE, world.column(Component<Tensor>{name}).data()->data(), {n, D, D});
+        }
+        case ColumnType::Tensor: {
+          auto padded = padded_tensors<D>(world.column(Component<Tensor>{name}));
+          write_dataset(file.id, name, H5T_NATIVE_DOUBLE, padded.data(), {n, 3, 3});
           break;
+        }
         case ColumnType::Flags:
           write_dataset(file.id, name, H5T_NATIVE_INT32, world.column(Component<Flags>{name}).data(), {n});
           break;
       }
       written.push_back({name, t});
     }
+    // One vertex cell per particle: the Xdmf3 readers build cells only from explicit
+    // connectivity, and a grid without cells draws nothing.
+    std::vector<std::int32_t> vertices(n);
+    std::iota(vertices.begin(), vertices.end(), 0);
+    write_dataset(file.id, "connectivity", H5T_NATIVE_INT32, vertices.data(), {n});
     write_attribute(file.id, "time", H5T_NATIVE_DOUBLE, time);
     write_attribute(file.id, "step", H5T_NATIVE_LLONG, step);
     check(H5Fflush(file.id, H5F_SCOPE_GLOBAL), "flush");

@@ -1,6 +1,8 @@
 #pragma once
-// One output frame as an HDF5 file: a dataset per field (N, or N x D for vectors, N x D x D for
-// tensors), plus a `time` attribute on the root group. Written to NAME.tmp and renamed.
+// One output frame as an HDF5 file: a dataset per field (N; N x 3 for vectors and N x 3 x 3 for
+// tensors in both dimensions, z components zero in 2D), `connectivity` (0..N-1, one vertex cell
+// per particle for the XDMF readers), and `time` and `step` attributes on the root group.
+// Written to NAME.tmp and renamed.
 #include <filesystem>
 #include <string>
 #include <vector>

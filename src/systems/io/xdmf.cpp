@@ -4,38 +4,44 @@
 
 namespace ryushi {
 
-std::string xdmf_document(int D, const std::vector<FrameRecord>& frames) {
+std::string xdmf_document(const std::vector<FrameRecord>& frames) {
   std::ostringstream out;
-  out.precision(12);
+  out.precision(15);
   out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
       << "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   for (auto& f : frames) {
+    const std::string n = std::to_string(f.particles);
+    const std::string h5 = "Format=\"HDF\">" + f.file + ":/";
+    // Explicit vertex connectivity: the legacy XDMF reader makes cells without it, the Xdmf3
+    // readers (ParaView's default for .xdmf) do not and would draw an empty view.
     out << "   <Grid Name=\"frame\" GridType=\"Uniform\">\n"
         << "    <Time Value=\"" << f.time << "\"/>\n"
-        << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << f.particles << "\"/>\n"
-        << "    <Geometry GeometryType=\"" << (D == 2 ? "XY" : "XYZ") << "\">\n"
-        << "     <DataItem Dimensions=\"" << f.particles << " " << D
-        << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << f.file << ":/position</DataItem>\n"
+        << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\" NodesPerElement=\"1\">\n"
+        << "     <DataItem Dimensions=\"" << n << " 1\" NumberType=\"Int\" Precision=\"4\" " << h5
+        << "connectivity</DataItem>\n"
+        << "    </Topology>\n"
+        << "    <Geometry GeometryType=\"XYZ\">\n"
+        << "     <DataItem Dimensions=\"" << n << " 3\" NumberType=\"Float\" Precision=\"8\" " << h5
+        << "position</DataItem>\n"
         << "    </Geometry>\n";
     for (auto& field : f.fields) {
       if (field.name == "position") continue;
+      // Frames store vectors as 3 and tensors as 3 x 3 components in 2D too (hdf5_frame.hpp).
       const char* type = "Scalar";
-      // Appended piecewise: GCC 12 reports a false -Wrestrict on `" " + std::to_string(..)`.
-      std::string dims = std::to_string(f.particles);
-      std::string number = "Float\" Precision=\"8";
+      const char* components = "";
+      const char* number = "Float\" Precision=\"8";
       if (field.type == ColumnType::Vector) {
         type = "Vector";
-        dims.append(" ").append(std::to_string(D));
+        components = " 3";
       } else if (field.type == ColumnType::Tensor) {
         type = "Tensor";
-        dims.append(" ").append(std::to_string(D * D));
+        components = " 9";
       } else if (field.type == ColumnType::Flags) {
         number = "Int\" Precision=\"4";
       }
-      // ParaView expects 3-component vectors; 2D vectors are still readable as 2-tuples.
       out << "    <Attribute Name=\"" << field.name << "\" AttributeType=\"" << type << "\" Center=\"Node\">\n"
-          << "     <DataItem Dimensions=\"" << dims << "\" NumberType=\"" << number << "\" Format=\"HDF\">"
-          << f.file << ":/" << field.name << "</DataItem>\n    </Attribute>\n";
+          << "     <DataItem Dimensions=\"" << n << components << "\" NumberType=\"" << number << "\" " << h5
+          << field.name << "</DataItem>\n    </Attribute>\n";
     }
     out << "   </Grid>\n";
   }

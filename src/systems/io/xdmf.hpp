@@ -1,6 +1,6 @@
 #pragma once
 // particles.xdmf: a temporal collection pointing at every frame's HDF5 datasets, so ParaView
-// opens the whole series as point data (Polyvertex topology).
+// opens the whole series as point data (one vertex cell per particle), in every ParaView reader.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -16,6 +16,6 @@ struct FrameRecord {
   std::vector<FieldInfo> fields;
 };
 
-std::string xdmf_document(int dimension, const std::vector<FrameRecord>& frames);
+std::string xdmf_document(const std::vector<FrameRecord>& frames);
 
 }  // namespace ryushi

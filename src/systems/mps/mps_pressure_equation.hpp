@@ -30,12 +30,16 @@ class MpsPressureEquation final : public System<D> {
   Access access() const override {
     return Access{}
         .read(components::position, components::number_density, components::pressure_role, components::id,
-              components::kind, neighbours_resource, resources::dt, domain_resource<D>)
+              components::kind, neighbours_resource, resources::dt_chosen, domain_resource<D>)
         .write(pressure_system_resource);
   }
   void initialise(World<D>&, Resources& res) override { res.ensure(pressure_system_resource); }
   void run(SystemContext<D>& ctx) override {
-    const double dt = ctx.read(resources::dt);
+    // The control's step, not the driver's shortened one: the relaxed source gamma (n* - n0)/dt^2
+    // holds a full step's compression, which a shortened step would amplify into a wrong
+    // pressure (an end-time frame showed 71% of the fluid negative). The shortened step then
+    // applies (dt/dt_chosen)^2 of the correction: a weaker relaxation for that one step.
+    const double dt = ctx.read(resources::dt_chosen);
     const auto& nl = ctx.read(neighbours_resource);
     const auto& domain = ctx.read(domain_resource<D>);
     auto x = ctx.read(components::position);

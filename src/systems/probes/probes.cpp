@@ -23,11 +23,49 @@ auto reduce_particles(std::size_t n, std::pair<double, double> init, Body&& body
       });
 }
 
+// The surface of the water column standing on the probe's base point (probes.hpp). Candidates are
+// the particles within the support of the vertical line; the line is sampled every d/4.
+template <int D>
+double water_surface(const Vec<D>& base, const World<D>& world, const Kernel<D>& kernel, double rho0, double top,
+                     double d) {
+  auto& x = world.column(components::position);
+  auto& kind = world.column(components::kind);
+  auto& m = world.column(components::mass);
+  const double support = kernel.support();
+  std::vector<std::size_t> near;
+  for (std::size_t i = 0; i < world.size(); ++i) {
+    Vec<D> r = x[i] - base;
+    r[D - 1] = 0;
+    if (r.norm() < support) near.push_back(i);
+  }
+  const double step = 0.25 * d;
+  bool in_water = false;
+  double previous_z = base[D - 1], previous_f = 0;
+  for (double z = base[D - 1]; z <= top; z += step) {
+    Vec<D> at = base;
+    at[D - 1] = z;
+    double fluid = 0, wall = 0;
+    for (auto i : near) {
+      double vw = m[i] / rho0 * kernel.w((x[i] - at).norm());
+      (kind[i] == kFluid ? fluid : wall) += vw;
+    }
+    // Inside a wall the fraction means nothing: skip until the line leaves it.
+    if (wall > 0.9) continue;
+    const double f = fluid / (1 - wall);
+    if (!in_water && f >= 0.5) in_water = true;
+    if (in_water && f < 0.5)  // the crossing, interpolated between the two samples
+      return previous_z + (previous_f - 0.5) / (previous_f - f) * (z - previous_z);
+    previous_z = z;
+    previous_f = f;
+  }
+  return in_water ? top : base[D - 1];
+}
+
 }  // namespace
 
 template <int D>
 std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const World<D>& world,
-                                  const Kernel<D>& kernel, double d) {
+                                  const Kernel<D>& kernel, double d, double rho0, const Domain<D>& domain) {
   auto& x = world.column(components::position);
   auto& kind = world.column(components::kind);
   auto& p = world.column(components::pressure);
@@ -52,19 +90,15 @@ std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const Wo
       }, true);
       out.push_back(r.first + 0.5 * d);
     } else {  // water_height
-      auto r = reduce_particles(world.size(), {lowest, 0.0}, [&](std::size_t i, auto& acc) {
-        if (kind[i] != kFluid) return;
-        for (int a = 0; a < D - 1; ++a)
-          if (std::abs(x[i][a] - at[a]) > d) return;
-        acc.first = std::max(acc.first, x[i][D - 1]);
-      }, true);
-      out.push_back(std::isfinite(r.first) ? r.first + 0.5 * d : 0.0);
+      out.push_back(water_surface<D>(at, world, kernel, rho0, domain.max[D - 1], d));
     }
   }
   return out;
 }
 
-template std::vector<double> sample_probes<2>(const std::vector<ProbeSpec>&, const World<2>&, const Kernel<2>&, double);
-template std::vector<double> sample_probes<3>(const std::vector<ProbeSpec>&, const World<3>&, const Kernel<3>&, double);
+template std::vector<double> sample_probes<2>(const std::vector<ProbeSpec>&, const World<2>&, const Kernel<2>&,
+                                              double, double, const Domain<2>&);
+template std::vector<double> sample_probes<3>(const std::vector<ProbeSpec>&, const World<3>&, const Kernel<3>&,
+                                              double, double, const Domain<3>&);
 
 }  // namespace ryushi

@@ -4,18 +4,26 @@
 //                 p(x) = sum_j p_j V_j W(x - x_j) / sum_j V_j W(x - x_j)
 //   surge_front   max over fluid particles of x (first axis) + d/2, the particle's outer edge,
 //                 so that it equals the block width at t = 0
-//   water_height  max over fluid particles within d of the probe horizontally of the vertical
-//                 coordinate, + d/2
+//   water_height  elevation of the surface of the water column standing on the probe's base
+//                 point: going up the vertical line from the base, the first height where the
+//                 fluid fill fraction f(z) falls below 1/2 (linear between samples d/4 apart).
+//                 f = sum_fluid V_j W / (1 - sum_wall V_j W), V_j = m_j/rho0: the share of the
+//                 kernel support not taken by walls that holds fluid (1 inside water, also next
+//                 to a wall; 1/2 at the surface, which on a lattice is the top row's edge, +d/2).
+//                 Drops and particles clinging to a wall above a gap are not the column and do
+//                 not count; an isolated particle reaches f ~ 0.2. The base itself when no water
+//                 stands there; points inside walls (wall share > 0.9) are skipped.
 #include <vector>
 
 #include "ecs/world.hpp"
 #include "scene/scene.hpp"
 #include "systems/kernels/kernel.hpp"
+#include "systems/neighbour/domain.hpp"
 
 namespace ryushi {
 
 template <int D>
 std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const World<D>& world,
-                                  const Kernel<D>& kernel, double spacing);
+                                  const Kernel<D>& kernel, double spacing, double rho0, const Domain<D>& domain);
 
 }  // namespace ryushi

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# The real-client test (`make test-paraview`): short WCSPH, MPS and 3D runs opened in ParaView's
+# own readers (XDMFReader, Xdmf3ReaderS, Xdmf3ReaderT and OpenDataFile's choice) under a virtual
+# display. tools/paraview_check.py asserts point and cell counts, array names and components,
+# the frame times and a non-empty picture per reader; then `ryushi render` (PNGs, MP4, a 3D
+# slice, a refusal). Usage: tools/test_paraview.sh BUILD_DIR
+# [IMAGE_DIR] (the screenshots go to IMAGE_DIR, default BUILD_DIR/paraview).
+set -euo pipefail
+build=${1:-build}
+images=${2:-$build/paraview}
+work=$build/paraview_runs
+rm -rf "$work"
+mkdir -p "$work" "$images"
+ryushi=$build/ryushi
+
+points() { sed -n 's/^  "particles": \([0-9]*\),$/\1/p' "$1/summary.json"; }
+
+check() {  # label out times [extra options]
+  local label=$1 out=$2 times=$3
+  shift 3
+  xvfb-run -a -s "-screen 0 1024x768x24" pvpython tools/paraview_check.py "$out" \
+    --expect-points "$(points "$out")" --expect-times "$times" --image-dir "$images" --label "$label" "$@" \
+    2> >(grep -v -e '^$' -e 'vtkXOpenGLRenderWindow' -e 'GLX' >&2)
+}
+
+# WCSPH 2D with a tensor field (the moment matrix M_i of the free-surface system, 3 x 3 in 2D).
+scene=$work/dam_break_2d_tensor.toml
+cp scenes/dam_break_2d.toml "$scene"
+printf '\n[[systems]]\nname = "free_surface_detection"\nmoment_matrix = true\n' >>"$scene"
+"$ryushi" run "$scene" --out "$work/wcsph" --quiet --end-time 0.04 --set particles.spacing=0.0125 \
+  --set output.interval=0.02 --set 'output.fields=["moment_matrix", "surface_normal", "free_surface"]'
+check wcsph "$work/wcsph" 0,0.02,0.04 --tensors moment_matrix --arrays velocity,pressure,density,kind,id,surface_normal
+
+"$ryushi" run scenes/dam_break_mps_2d.toml --out "$work/mps" --quiet --end-time 0.04 \
+  --set particles.spacing=0.0125 --set output.interval=0.02
+check mps "$work/mps" 0,0.02,0.04
+
+"$ryushi" run scenes/dam_break_3d.toml --out "$work/wcsph_3d" --quiet --end-time 0.02 \
+  --set output.interval=0.01
+check wcsph_3d "$work/wcsph_3d" 0,0.01,0.02
+echo "test-paraview: 3 runs x 4 readers passed; screenshots in $images"
+
+# Pictures without ParaView: every frame and a movie, a 3D slice, and a clean refusal.
+"$ryushi" render "$work/wcsph" --movie >/dev/null
+frames=$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 \
+  "$work/wcsph/render/pressure.mp4")
+[ "$frames" = 3 ] || { echo "test-paraview: pressure.mp4 has $frames frames, expected 3" >&2; exit 1; }
+[ "$(ls "$work/wcsph/render"/pressure_*.png | wc -l)" = 3 ] || { echo "test-paraview: expected 3 PNGs" >&2; exit 1; }
+"$ryushi" render "$work/wcsph_3d" --frames last --field velocity --slice y=0.1 >/dev/null
+[ -s "$work/wcsph_3d/render/velocity_00002.png" ] || { echo "test-paraview: no 3D slice picture" >&2; exit 1; }
+mkdir -p "$work/empty"
+if "$ryushi" render "$work/empty" 2>"$work/empty.err"; then echo "test-paraview: render of no frames succeeded" >&2; exit 1; fi
+grep -q "no frames" "$work/empty.err" || { echo "test-paraview: unexpected message: $(cat "$work/empty.err")" >&2; exit 1; }
+echo "test-paraview: ryushi render wrote PNGs, a 3-frame MP4 and a 3D slice; refused an empty run"
