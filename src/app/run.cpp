@@ -136,10 +136,11 @@ class Runner {
   void prepare() {
     PipelineOptions po{opt_.dump_matrix_dir, opt_.dump_step};
     auto method = build_method<D>(scene_, world_, po);
-    params_ = method.physics;
+    context_ = method.context;
+    method_parameters_ = method.parameters;
     method_summary_ = method.summary;
     density_may_vanish_ = method.density_may_vanish;
-    res_.ensure(domain_resource<D>) = params_.domain;
+    res_.ensure(domain_resource<D>) = context_.domain;
     res_.ensure(resources::time) = 0.0;
     res_.ensure(resources::step) = 0;
     scheduler_ = std::make_unique<Scheduler<D>>(std::move(method.pipeline), world_, res_, profiler_);
@@ -155,7 +156,7 @@ class Runner {
     res_.ensure(resources::dt_chosen) = res_.get(resources::dt);
     HealthCheck<D> h;
     h.density_may_vanish = density_may_vanish_;
-    h.run(world_, params_.domain);
+    h.run(world_, context_.domain);
     if (h.index != HealthCheck<D>::kNone)
       throw SceneError(scene_.path + ": the initial state is invalid: particle id " +
                        std::to_string(world_.column(components::id)[h.index]) + " " + h.problem);
@@ -168,7 +169,7 @@ class Runner {
       if (e.path().extension() == ".h5" || e.path().extension() == ".tmp") fs::remove(e.path());
     fs::remove(out_ / "trace.json");
     wall_start_ = std::chrono::steady_clock::now();
-    initial_ = diagnose(world_, params_.rho0);
+    initial_ = diagnose(world_, context_.rho0);
     slot_output_ = profiler_.slot("output");
     slot_probes_ = profiler_.slot("probes");
     slot_reorder_ = profiler_.slot("reorder_by_cell");
@@ -259,7 +260,7 @@ class Runner {
     Profiler::Scope t(profiler_, slot_health_);
     HealthCheck<D> h;
     h.density_may_vanish = density_may_vanish_;
-    h.run(world_, params_.domain);
+    h.run(world_, context_.domain);
     if (h.index != HealthCheck<D>::kNone) {
       auto& x = world_.column(components::position)[h.index];
       std::ostringstream m;
@@ -275,7 +276,7 @@ class Runner {
     next_probe_ = (std::floor(time_ / scene_.probe_interval + 1e-9) + 1) * scene_.probe_interval;
     if (scene_.probes.empty()) return;
     Profiler::Scope t(profiler_, slot_probes_);
-    auto values = sample_probes<D>(scene_.probes, world_, params_.kernel, scene_.spacing, params_.rho0, params_.domain);
+    auto values = sample_probes<D>(scene_.probes, world_, context_.kernel, scene_.spacing, context_.rho0, context_.domain);
     values.insert(values.begin(), time_);
     probe_rows_.push_back(std::move(values));
   }
@@ -309,7 +310,7 @@ class Runner {
   }
 
   void write_summary(const std::string& status, const std::string& message) {
-    auto now = diagnose(world_, params_.rho0);
+    auto now = diagnose(world_, context_.rho0);
     double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
     const auto& nl = res_.get(neighbours_resource);
     JsonWriter w;
@@ -335,8 +336,7 @@ class Runner {
     w.end_object();
     w.key("parameters").begin_object();
     w.key("spacing").value(scene_.spacing);
-    w.key("smoothing_length").value(params_.kernel.h());
-    w.key("sound_speed").value(params_.c0);
+    for (auto& [name, value] : method_parameters_) w.key(name).value(value);
     w.key("last_dt").value(dt_used_);
     w.end_object();
     w.key("diagnostics").begin_object();
@@ -376,7 +376,8 @@ class Runner {
   const Scene& scene_;
   const RunOptions& opt_;
   Profiler profiler_;
-  WcsphParameters<D> params_;
+  MethodContext<D> context_;
+  std::vector<std::pair<std::string, double>> method_parameters_;
   World<D> world_;
   Resources res_;
   std::unique_ptr<Scheduler<D>> scheduler_;

@@ -1,14 +1,22 @@
 #pragma once
-// One entry point for every method: fills the world from the scene and returns the step
-// pipeline, the first time step and the physical constants the driver needs (probes, health
-// check, diagnostics, registered [[systems]]). The driver knows no method by name.
+// A method is a registered recipe, like a system: its own file fills the world from the scene
+// and returns the step pipeline, the first time step and the context the driver and the
+// [[systems]] need, and registers itself by name next to that code:
+//
+//   template <int D> MethodSetup<D> build_my_method(const Scene&, World<D>&, const PipelineOptions&);
+//   RYUSHI_REGISTER_METHOD("my_method", "One line for docs/scenes.md.", build_my_method);
+//
+// The driver and build_method know no method by name.
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ecs/system.hpp"
+#include "methods/method_context.hpp"
+#include "methods/system_registry.hpp"  // RYUSHI_CONCAT
 #include "scene/scene.hpp"
-#include "systems/fluid/wcsph_parameters.hpp"
 
 namespace ryushi {
 
@@ -19,18 +27,40 @@ struct PipelineOptions {
 
 template <int D>
 struct MethodSetup {
-  // Kernel, domain, gravity, rho0 of the scene (c0 only means something for wcsph).
-  WcsphParameters<D> physics;
+  MethodContext<D> context;
   std::vector<SystemPtr<D>> pipeline;
   double first_dt = 0;
   std::string summary;  // one phrase for the start-up log line, e.g. "c0 = 19.8 m/s"
+  // Figures of the method written under "parameters" in summary.json, e.g. {"sound_speed", c0}.
+  std::vector<std::pair<std::string, double>> parameters;
   // MPS density is rho0 n*/n0, a diagnostic: an isolated splash particle has n* = 0. WCSPH
   // divides by density, so there zero is a failure.
   bool density_may_vanish = false;
 };
 
-// Throws SceneError when the options do not fit the method (a matrix dump of an explicit method).
+template <int D>
+using MethodBuilder = std::function<MethodSetup<D>(const Scene&, World<D>&, const PipelineOptions&)>;
+
+struct MethodRegistryEntry {
+  std::string doc;
+  MethodBuilder<2> build2;
+  MethodBuilder<3> build3;
+};
+
+bool register_method(const std::string& name, MethodRegistryEntry entry);
+std::vector<std::string> method_names();  // sorted
+const MethodRegistryEntry& method_registry_entry(const std::string& name);
+
+// The scene's method, with the scene's [[systems]] appended. Throws SceneError when the options
+// do not fit the method (a matrix dump of an explicit method).
 template <int D>
 MethodSetup<D> build_method(const Scene& scene, World<D>& world, const PipelineOptions& options = {});
+
+// Throws SceneError: `--dump-matrix` given to a method that assembles no linear system.
+void refuse_matrix_dump(const Scene& scene, const PipelineOptions& options);
+
+#define RYUSHI_REGISTER_METHOD(NAME, DOC, BUILD)                                                  \
+  [[maybe_unused]] static const bool RYUSHI_CONCAT(ryushi_method_registered_, __LINE__) =        \
+      ::ryushi::register_method(NAME, ::ryushi::MethodRegistryEntry{DOC, BUILD<2>, BUILD<3>})
 
 }  // namespace ryushi

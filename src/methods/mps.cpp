@@ -1,6 +1,20 @@
-#include "methods/mps.hpp"
-
+// The MPS method (moving particle semi-implicit; BMG paper section 2) as a recipe, registered
+// as "mps". One step:
+//   neighbour_search         pairs within r_e + skin at x^k (reused at x*)
+//   mps_explicit_forces      u* = u + dt (nu lap u + g), x* = x + dt u*
+//   mps_number_density       n* at x*; surface where n* < beta n0 (p = 0)
+//   ppe_assembly             -lap p = gamma rho0/dt^2 (n* - n0)/n0 over unknown particles
+//   multigrid_setup          (or jacobi_setup) the preconditioner from the current positions
+//   linear_solve             Krylov solve into the pressure column
+//   mps_pressure_correction  u, x corrected by -dt/rho0 grad p
+//   mps_collision            approaching pairs closer than 0.5 l0 collide inelastically
+//   time_step_control        dt for the next step
+// Fluid particles move; wall particles (the innermost wall_pressure_layers) carry pressure;
+// the outer wall layers are dummies that only complete the number density.
 #include <cmath>
+#include <cstdio>
+
+#include "methods/method.hpp"
 
 #include "methods/scene_particles.hpp"
 #include "systems/mps/mps_collision.hpp"
@@ -12,8 +26,11 @@
 #include "systems/neighbour/neighbour_search.hpp"
 #include "systems/pressure/linear_solve.hpp"
 #include "systems/pressure/preconditioner_setup.hpp"
+#include "systems/pressure/pressure_system_dump.hpp"
 
 namespace ryushi {
+
+namespace {
 
 template <int D>
 MpsParameters<D> mps_parameters(const Scene& s) {
@@ -65,11 +82,29 @@ std::vector<SystemPtr<D>> mps_pipeline(const Scene& s, const MpsParameters<D>& p
   return list;
 }
 
-template MpsParameters<2> mps_parameters<2>(const Scene&);
-template MpsParameters<3> mps_parameters<3>(const Scene&);
-template void populate_mps_world<2>(const Scene&, const MpsParameters<2>&, World<2>&);
-template void populate_mps_world<3>(const Scene&, const MpsParameters<3>&, World<3>&);
-template std::vector<SystemPtr<2>> mps_pipeline<2>(const Scene&, const MpsParameters<2>&);
-template std::vector<SystemPtr<3>> mps_pipeline<3>(const Scene&, const MpsParameters<3>&);
+template <int D>
+MethodSetup<D> build_mps(const Scene& s, World<D>& world, const PipelineOptions& options) {
+  auto p = mps_parameters<D>(s);
+  populate_mps_world<D>(s, p, world);
+  MethodSetup<D> m;
+  m.context = method_context<D>(s, p.weight);
+  m.pipeline = mps_pipeline<D>(s, p);
+  m.first_dt = MpsTimeStep<D>(p).limit(0.0);
+  m.density_may_vanish = true;
+  char b[64];
+  std::snprintf(b, sizeof b, "r_e = %.4g m, ", p.weight.support());
+  m.summary = b + s.solver.krylov + " + " + s.solver.preconditioner;
+  m.parameters = {{"smoothing_length", p.weight.h()}, {"influence_radius", p.weight.support()}};
+  if (!options.dump_matrix_dir.empty())
+    m.pipeline.push_back(std::make_shared<PressureSystemDump<D>>(options.dump_matrix_dir, options.dump_step));
+  return m;
+}
+
+}  // namespace
+
+RYUSHI_REGISTER_METHOD("mps",
+                       "moving particle semi-implicit (pressure from a Poisson equation each step, solved as set "
+                       "in [solver]; docs/mps.md)",
+                       build_mps);
 
 }  // namespace ryushi

@@ -4,7 +4,9 @@
 // scheduler places them in the flow graph by their declared access.
 //
 //   RYUSHI_REGISTER_SYSTEM(MySystem, "my_system", "What it does.", { KeySpec... });
-// where MySystem<D> has a constructor MySystem(const toml::table& params, const WcsphParameters<D>&).
+// where MySystem<D> has a constructor MySystem(const toml::table& params, const MethodContext<D>&):
+// the method-neutral context (kernel, spacing, domain, gravity, material, method name), so the
+// same system runs under every method.
 #include <toml++/toml.h>
 
 #include <functional>
@@ -13,15 +15,15 @@
 
 #include "ecs/system.hpp"
 #include "scene/schema.hpp"
-#include "systems/fluid/wcsph_parameters.hpp"
+#include "methods/method_context.hpp"
 
 namespace ryushi {
 
 struct SystemRegistryEntry {
   std::string doc;
   std::vector<KeySpec> params;
-  std::function<SystemPtr<2>(const toml::table&, const WcsphParameters<2>&)> make2;
-  std::function<SystemPtr<3>(const toml::table&, const WcsphParameters<3>&)> make3;
+  std::function<SystemPtr<2>(const toml::table&, const MethodContext<2>&)> make2;
+  std::function<SystemPtr<3>(const toml::table&, const MethodContext<3>&)> make3;
 };
 
 bool register_system(const std::string& name, SystemRegistryEntry entry);
@@ -31,19 +33,19 @@ const SystemRegistryEntry& system_registry_entry(const std::string& name);
 
 template <int D>
 SystemPtr<D> make_registered_system(const std::string& name, const toml::table& params,
-                                    const WcsphParameters<D>& physics) {
+                                    const MethodContext<D>& context) {
   auto& e = system_registry_entry(name);
   if constexpr (D == 2)
-    return e.make2(params, physics);
+    return e.make2(params, context);
   else
-    return e.make3(params, physics);
+    return e.make3(params, context);
 }
 
 template <template <int> class T>
 SystemRegistryEntry registry_entry(std::string doc, std::vector<KeySpec> params) {
   return {std::move(doc), std::move(params),
-          [](const toml::table& p, const WcsphParameters<2>& w) { return std::make_shared<T<2>>(p, w); },
-          [](const toml::table& p, const WcsphParameters<3>& w) { return std::make_shared<T<3>>(p, w); }};
+          [](const toml::table& p, const MethodContext<2>& w) { return std::make_shared<T<2>>(p, w); },
+          [](const toml::table& p, const MethodContext<3>& w) { return std::make_shared<T<3>>(p, w); }};
 }
 
 #define RYUSHI_CONCAT_INNER(a, b) a##b

@@ -1,8 +1,14 @@
-#include "methods/wcsph.hpp"
-
+// The weakly compressible SPH method as a recipe: which systems, in which order, with which
+// options from the scene, registered as "wcsph". One step: neighbour search, then two stages of
+// [wall BC, density gradient, continuity, momentum, viscosity] around the predictor and
+// corrector, the equation of state after each, and the time-step control.
 #include <cmath>
+#include <cstdio>
+
+#include "methods/method.hpp"
 
 #include "methods/scene_particles.hpp"
+#include "systems/fluid/wcsph_parameters.hpp"
 #include "systems/boundary/adami_wall.hpp"
 #include "systems/fluid/continuity_delta_sph.hpp"
 #include "systems/fluid/laminar_viscosity_morris.hpp"
@@ -14,6 +20,8 @@
 #include "systems/neighbour/neighbour_search.hpp"
 
 namespace ryushi {
+
+namespace {
 
 template <int D>
 WcsphParameters<D> wcsph_parameters(const Scene& s) {
@@ -33,6 +41,7 @@ WcsphParameters<D> wcsph_parameters(const Scene& s) {
   return p;
 }
 
+// Fluid blocks at rest (hydrostatic density and pressure) and Adami wall containers.
 template <int D>
 void populate_world(const Scene& s, const WcsphParameters<D>& p, World<D>& world) {
   const double g_up = -p.gravity[D - 1];  // gravity along the vertical (last) axis
@@ -75,11 +84,24 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
   return list;
 }
 
-template WcsphParameters<2> wcsph_parameters<2>(const Scene&);
-template WcsphParameters<3> wcsph_parameters<3>(const Scene&);
-template void populate_world<2>(const Scene&, const WcsphParameters<2>&, World<2>&);
-template void populate_world<3>(const Scene&, const WcsphParameters<3>&, World<3>&);
-template std::vector<SystemPtr<2>> wcsph_pipeline<2>(const Scene&, const WcsphParameters<2>&);
-template std::vector<SystemPtr<3>> wcsph_pipeline<3>(const Scene&, const WcsphParameters<3>&);
+template <int D>
+MethodSetup<D> build_wcsph(const Scene& s, World<D>& world, const PipelineOptions& options) {
+  refuse_matrix_dump(s, options);
+  auto p = wcsph_parameters<D>(s);
+  populate_world<D>(s, p, world);
+  MethodSetup<D> m;
+  m.context = method_context<D>(s, p.kernel);
+  m.pipeline = wcsph_pipeline<D>(s, p);
+  m.first_dt = TimeStepControl<D>(p, s.cfl).limit(0.0, p.gravity.norm());
+  char b[96];
+  std::snprintf(b, sizeof b, "h = %.4g m, c0 = %.4g m/s", p.kernel.h(), p.c0);
+  m.summary = b;
+  m.parameters = {{"smoothing_length", p.kernel.h()}, {"sound_speed", p.c0}};
+  return m;
+}
+
+}  // namespace
+
+RYUSHI_REGISTER_METHOD("wcsph", "weakly compressible SPH (explicit, Tait equation of state; docs/wcsph.md)", build_wcsph);
 
 }  // namespace ryushi

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "methods/method.hpp"
 #include "methods/system_registry.hpp"
 #include "systems/kernels/kernel.hpp"
 
@@ -31,6 +32,14 @@ KeySpec choice(std::string key, std::string def, std::string doc, std::vector<st
   KeySpec k{std::move(key), KeyType::String, "", std::move(def), std::move(doc), required};
   k.choices = std::move(choices);
   return k;
+}
+
+// "Method: a = ...; b = ..." from the method registry (each method registers its own line).
+std::string methods_doc() {
+  std::string doc = "Method:";
+  for (auto& name : method_names()) doc += " " + name + " = " + method_registry_entry(name).doc + ";";
+  doc.back() = '.';
+  return doc;
 }
 
 std::vector<SectionSpec> build() {
@@ -66,7 +75,7 @@ std::vector<SectionSpec> build() {
                {{"gravity", K::Vector, "m/s^2", "(0, -9.81) in 2D; (0, 0, -9.81) in 3D",
                  "Gravitational acceleration. The last axis is 'up' for probes and hydrostatic initialisation."}}});
   s.push_back({"method", false, false, "The particle method and its parameters.",
-               {choice("name", "\"wcsph\"", "Method: wcsph = weakly compressible SPH (explicit, Tait equation of state); mps = moving particle semi-implicit (pressure from a Poisson equation each step, solved as set in [solver]; docs/mps.md).", {"wcsph", "mps"}),
+               {choice("name", "\"wcsph\"", methods_doc(), method_names()),
                 non_negative("delta", "", "0.1", "delta-SPH density diffusion coefficient (seed 002 eq. 18); 0 turns it off."),
                 non_negative("artificial_viscosity", "", "0.02", "Monaghan artificial viscosity alpha (linear term, seed 002 eq. 23 'A')."),
                 non_negative("artificial_viscosity_quadratic", "", "0.0", "Quadratic term beta ('B')."),

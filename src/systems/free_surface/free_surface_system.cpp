@@ -17,11 +17,11 @@ inline constexpr Component<Tensor> moment_matrix_component{"moment_matrix"};
 template <int D>
 class FreeSurfaceDetection final : public System<D> {
  public:
-  FreeSurfaceDetection(const toml::table& params, const WcsphParameters<D>& physics)
-      : physics_(physics), rule_(free_surface_rule(*params["rule"].value<std::string>())) {
+  FreeSurfaceDetection(const toml::table& params, const MethodContext<D>& context)
+      : context_(context), rule_(free_surface_rule(*params["rule"].value<std::string>())) {
     p_.beta = *params["beta"].value<double>();
     write_moments_ = *params["moment_matrix"].value<bool>();
-    if (rule_ == FreeSurfaceRule::Mps) n0_ = mps_reference<D>(physics_.kernel, physics_.spacing).n0;
+    if (rule_ == FreeSurfaceRule::Mps) n0_ = mps_reference<D>(context_.kernel, context_.spacing).n0;
   }
   std::string name() const override { return "free_surface_detection"; }
   Access access() const override {
@@ -36,8 +36,8 @@ class FreeSurfaceDetection final : public System<D> {
     auto rho = ctx.read(components::density);
     volume_.resize(m.size());
     for (std::size_t i = 0; i < m.size(); ++i) volume_[i] = m[i] / rho[i];
-    ParticleView<D> view{ctx.read(components::position), volume_, ctx.read(neighbours_resource), physics_.kernel,
-                         physics_.domain};
+    ParticleView<D> view{ctx.read(components::position), volume_, ctx.read(neighbours_resource), context_.kernel,
+                         context_.domain};
     auto flag = ctx.write(free_surface_flag);
     auto normal = ctx.write(surface_normal_component);
     for_each_of_kind(ctx.read(components::kind), kFluid, [&](std::size_t i) {
@@ -52,7 +52,7 @@ class FreeSurfaceDetection final : public System<D> {
   }
 
  private:
-  WcsphParameters<D> physics_;
+  MethodContext<D> context_;
   FreeSurfaceRule rule_;
   FreeSurfaceParameters p_;
   double n0_ = 0;
