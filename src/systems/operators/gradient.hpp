@@ -7,6 +7,8 @@
 //   corrected  L_i sum_j V_j (f_j - f_i) gW_ij                  (ISPH eqs. 9-10; exact for linear f)
 //   mps        d/n0 sum_j (f_j - f_i) r_ij / |r_ij|^2 w_ij      (MPS, with f_i in place of the
 //              local minimum so that the operator is linear)
+#include <vector>
+
 #include "systems/operators/renormalisation.hpp"
 
 namespace ryushi {
@@ -46,6 +48,16 @@ Vec<D> gradient_mps(const ParticleView<D>& v, std::span<const double> f, std::si
     g += (f[j] - f[i]) / r.squaredNorm() * v.kernel.w(r.norm()) * r;
   }
   return (D / n0) * g;
+}
+
+// The corrected gradient as weights: grad_i = sum_k g_k (f_k - f_i), g_k = V_k L_i gW_ik (k over
+// neighbours.of(i) in order), for assembling rows that hold a gradient (Neumann walls).
+template <int D>
+void gradient_weights_corrected(const ParticleView<D>& v, std::size_t i, std::vector<Vec<D>>& g) {
+  const Mat<D> L = renormalisation(v, i);
+  auto nb = v.neighbours.of(i);
+  g.resize(nb.size());
+  for (std::size_t k = 0; k < nb.size(); ++k) g[k] = v.volume[nb[k]] * (L * v.grad_w(v.r(i, nb[k])));
 }
 
 }  // namespace ryushi

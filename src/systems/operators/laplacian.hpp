@@ -15,21 +15,110 @@
 //              f_i - f_j with the sign carried by its pressure equation)
 #include <Eigen/LU>
 
+#include <array>
+#include <vector>
+
 #include "systems/operators/renormalisation.hpp"
 #include "systems/operators/symmetric_pairs.hpp"
 
 namespace ryushi {
 
+// Every Laplacian here is linear in f and written as weights on the differences,
+//   lap_i = sum_k w_k (f_k - f_i),  k over neighbours.of(i) in order,
+// so that the value functions below, the pressure-equation assembly and the viscous terms use
+// one implementation. The *_weights functions fill `w` (resized to the neighbour count).
+
+template <int D>
+void laplacian_weights_standard(const ParticleView<D>& v, std::size_t i, std::vector<double>& w) {
+  const double eta2 = 0.01 * v.kernel.h() * v.kernel.h();
+  auto nb = v.neighbours.of(i);
+  w.resize(nb.size());
+  for (std::size_t k = 0; k < nb.size(); ++k) {
+    Vec<D> r = v.r(i, nb[k]);
+    double r2 = r.squaredNorm();
+    w[k] = v.volume[nb[k]] * (-2.0 * v.kernel.grad_factor(std::sqrt(r2)) * r2 / (r2 + eta2));
+  }
+}
+
+// Corrected (Fatehi-Manzari) weights: with c_j = B_i : e_j (x) gW_j and the corrected gradient
+// G_i = L_i sum_k V_k (f_k - f_i) gW_k,
+//   lap_i = sum_j 2 V_j c_j (f_j - f_i)/|r_j| - E . G_i,  E = sum_j 2 V_j c_j e_j,
+// so w_k = 2 V_k c_k/|r_k| - V_k E . L_i gW_k (the ISPH paper's A*_ij, eq. 12). Where L_i or the
+// B_i system is singular the standard weights are used; returns false then.
+template <int D>
+bool laplacian_weights_corrected(const ParticleView<D>& v, std::size_t i, std::vector<double>& w) {
+  constexpr int K = kSymmetricCount<D>;
+  constexpr auto pairs = symmetric_pairs<D>();
+  bool corrected = false;
+  const Mat<D> L = renormalisation(v, i, &corrected);
+  if (!corrected) {
+    laplacian_weights_standard(v, i, w);
+    return false;
+  }
+  auto nb = v.neighbours.of(i);
+  // Y_cd = L_i sum_k V_k gW_k r_k,c r_k,d.
+  std::array<Vec<D>, K> Y;
+  Y.fill(Vec<D>::Zero());
+  for (auto j : nb) {
+    Vec<D> r = v.r(i, j), gw = v.volume[j] * v.grad_w(r);
+    for (int p = 0; p < K; ++p) Y[p] += gw * r[pairs[p].first] * r[pairs[p].second];
+  }
+  for (auto& y : Y) y = L * y;
+  // K beta = delta, beta = B's independent entries; u_j holds e (x) gW with off-diagonals doubled.
+  Eigen::Matrix<double, K, K> Kmat = Eigen::Matrix<double, K, K>::Zero();
+  Eigen::Matrix<double, K, 1> delta = Eigen::Matrix<double, K, 1>::Zero();
+  for (int p = 0; p < D; ++p) delta[p] = 1.0;
+  auto u_of = [&](const Vec<D>& e, const Vec<D>& gw) {
+    Eigen::Matrix<double, K, 1> u;
+    for (int p = 0; p < K; ++p) {
+      auto [a, b] = pairs[p];
+      u[p] = (a == b ? 1.0 : 2.0) * 0.5 * (e[a] * gw[b] + e[b] * gw[a]);
+    }
+    return u;
+  };
+  for (auto j : nb) {
+    Vec<D> r = v.r(i, j), gw = v.grad_w(r);
+    double len = r.norm();
+    Vec<D> e = r / len;
+    Eigen::Matrix<double, K, 1> wv;
+    for (int p = 0; p < K; ++p) wv[p] = len * e[pairs[p].first] * e[pairs[p].second] - e.dot(Y[p]);
+    Kmat += v.volume[j] * wv * u_of(e, gw).transpose();
+  }
+  Eigen::FullPivLU<Eigen::Matrix<double, K, K>> lu(Kmat);
+  if (!lu.isInvertible()) {
+    laplacian_weights_standard(v, i, w);
+    return false;
+  }
+  Eigen::Matrix<double, K, 1> beta = lu.solve(delta);
+  w.resize(nb.size());
+  Vec<D> E = Vec<D>::Zero();
+  for (std::size_t k = 0; k < nb.size(); ++k) {
+    Vec<D> r = v.r(i, nb[k]), gw = v.grad_w(r);
+    double len = r.norm();
+    Vec<D> e = r / len;
+    double c = beta.dot(u_of(e, gw));
+    w[k] = 2.0 * v.volume[nb[k]] * c / len;
+    E += 2.0 * v.volume[nb[k]] * c * e;
+  }
+  const Vec<D> LtE = L.transpose() * E;
+  for (std::size_t k = 0; k < nb.size(); ++k) w[k] -= v.volume[nb[k]] * LtE.dot(v.grad_w(v.r(i, nb[k])));
+  return true;
+}
+
+// sum_k w_k (f_k - f_i) for weights aligned with neighbours.of(i).
+template <int D>
+double apply_weights(const ParticleView<D>& v, std::span<const double> f, std::size_t i, const std::vector<double>& w) {
+  auto nb = v.neighbours.of(i);
+  double sum = 0;
+  for (std::size_t k = 0; k < nb.size(); ++k) sum += w[k] * (f[nb[k]] - f[i]);
+  return sum;
+}
+
 template <int D>
 double laplacian_standard(const ParticleView<D>& v, std::span<const double> f, std::size_t i) {
-  const double eta2 = 0.01 * v.kernel.h() * v.kernel.h();
-  double lap = 0;
-  for (auto j : v.neighbours.of(i)) {
-    Vec<D> r = v.r(i, j);
-    double r2 = r.squaredNorm();
-    lap += v.volume[j] * (f[j] - f[i]) * (-2.0 * v.kernel.grad_factor(std::sqrt(r2)) * r2 / (r2 + eta2));
-  }
-  return lap;
+  thread_local std::vector<double> w;
+  laplacian_weights_standard(v, i, w);
+  return apply_weights(v, f, i, w);
 }
 
 template <int D>
@@ -41,54 +130,9 @@ double laplacian_mps(const ParticleView<D>& v, std::span<const double> f, std::s
 
 template <int D>
 double laplacian_corrected(const ParticleView<D>& v, std::span<const double> f, std::size_t i) {
-  constexpr int K = kSymmetricCount<D>;
-  constexpr auto pairs = symmetric_pairs<D>();
-  bool corrected = false;
-  const Mat<D> L = renormalisation(v, i, &corrected);
-  if (!corrected) return laplacian_standard(v, f, i);
-  // Y_cd and the corrected gradient G_i.
-  std::array<Vec<D>, K> Y;
-  Y.fill(Vec<D>::Zero());
-  Vec<D> G = Vec<D>::Zero();
-  for (auto j : v.neighbours.of(i)) {
-    Vec<D> r = v.r(i, j), gw = v.volume[j] * v.grad_w(r);
-    for (int p = 0; p < K; ++p) Y[p] += gw * r[pairs[p].first] * r[pairs[p].second];
-    G += (f[j] - f[i]) * gw;
-  }
-  for (auto& y : Y) y = L * y;
-  G = L * G;
-  // K beta = delta, beta = B's independent entries; u_j holds e (x) gW with off-diagonals doubled.
-  Eigen::Matrix<double, K, K> Kmat = Eigen::Matrix<double, K, K>::Zero();
-  Eigen::Matrix<double, K, 1> delta = Eigen::Matrix<double, K, 1>::Zero();
-  for (int p = 0; p < D; ++p) delta[p] = 1.0;
-  for (auto j : v.neighbours.of(i)) {
-    Vec<D> r = v.r(i, j), gw = v.grad_w(r);
-    double len = r.norm();
-    Vec<D> e = r / len;
-    Eigen::Matrix<double, K, 1> u, w;
-    for (int p = 0; p < K; ++p) {
-      auto [a, b] = pairs[p];
-      u[p] = (a == b ? 1.0 : 2.0) * 0.5 * (e[a] * gw[b] + e[b] * gw[a]);
-      w[p] = len * e[a] * e[b] - e.dot(Y[p]);
-    }
-    Kmat += v.volume[j] * w * u.transpose();
-  }
-  Eigen::FullPivLU<Eigen::Matrix<double, K, K>> lu(Kmat);
-  if (!lu.isInvertible()) return laplacian_standard(v, f, i);
-  Eigen::Matrix<double, K, 1> beta = lu.solve(delta);
-  double lap = 0;
-  for (auto j : v.neighbours.of(i)) {
-    Vec<D> r = v.r(i, j), gw = v.grad_w(r);
-    double len = r.norm();
-    Vec<D> e = r / len;
-    double contraction = 0;
-    for (int p = 0; p < K; ++p) {
-      auto [a, b] = pairs[p];
-      contraction += beta[p] * (a == b ? 1.0 : 2.0) * 0.5 * (e[a] * gw[b] + e[b] * gw[a]);
-    }
-    lap += 2.0 * v.volume[j] * contraction * ((f[j] - f[i]) / len - e.dot(G));
-  }
-  return lap;
+  thread_local std::vector<double> w;
+  laplacian_weights_corrected(v, i, w);
+  return apply_weights(v, f, i, w);
 }
 
 }  // namespace ryushi
