@@ -16,9 +16,14 @@ SceneParticles<D> scene_particles(const Scene& s) {
     std::array<long, D> from{}, to{};
     for (int a = 0; a < D; ++a) to[a] = std::lround((b.max[a] - b.min[a]) / d);
     double top = b.min[D - 1] + to[D - 1] * d;
+    Vec<D> velocity = b.velocity.empty() ? Vec<D>::Zero() : scene_vector<D>(b.velocity);
+    Vec<D> centre = 0.5 * (scene_vector<D>(b.min) + scene_vector<D>(b.max));
     for_each_lattice_point<D>(lo, d, from, to, [&](const Vec<D>& x) {
       out.fluid.push_back(x);
       out.depth.push_back(top - x[D - 1]);
+      Vec<D> u = velocity;
+      if constexpr (D == 2) u += b.angular_velocity * Vec<D>(x[1] - centre[1], -(x[0] - centre[0]));
+      out.fluid_velocity.push_back(u);
     });
   }
   for (auto& w : s.walls) {
@@ -30,10 +35,15 @@ SceneParticles<D> scene_particles(const Scene& s) {
     }
     for_each_lattice_point<D>(lo, d, from, to, [&](const Vec<D>& q) {
       double outside = 0;  // how far the point lies outside the box, (layer - 1/2) d
-      for (int a = 0; a < D; ++a) outside = std::max({outside, lo[a] - q[a], q[a] - hi[a]});
+      Vec<D> normal = Vec<D>::Zero();
+      for (int a = 0; a < D; ++a) {
+        outside = std::max({outside, lo[a] - q[a], q[a] - hi[a]});
+        normal[a] = std::max(0.0, q[a] - hi[a]) - std::max(0.0, lo[a] - q[a]);
+      }
       if (outside <= 0) return;
       out.wall.push_back(q);
       out.wall_layer.push_back(static_cast<int>(std::lround(outside / d + 0.5)));
+      out.wall_normal.push_back(normal.normalized());
     });
   }
   return out;

@@ -19,30 +19,48 @@ template <int D>
 struct SceneParticles {
   std::vector<Vec<D>> fluid;
   std::vector<double> depth;
+  std::vector<Vec<D>> fluid_velocity;  // the block's initial velocity and rotation
   std::vector<Vec<D>> wall;
   std::vector<int> wall_layer;
+  // Unit normal out of the fluid into the wall: along the axes on which the particle lies
+  // outside the box, weighted by how far, so a layer-1 corner particle gets the bisector.
+  std::vector<Vec<D>> wall_normal;
 };
 
 template <int D>
 SceneParticles<D> scene_particles(const Scene& scene);
 
-// Appends the scene's particles to the world: fluid at rest with (density, pressure) =
-// fluid_state(depth) and mass = density * d^D (each lattice cell holds its fluid), then the wall
-// particles with kind = wall_kind(layer), density rho0 and mass rho0 d^D.
-template <int D, class FluidState, class WallKind>
-void append_scene_particles(const Scene& s, double rho0, World<D>& world, FluidState&& fluid_state,
-                            WallKind&& wall_kind) {
+// Appends the scene's particles to the world: fluid with the blocks' initial velocities,
+// (density, pressure) = fluid_state(depth) and mass = density * d^D (each lattice cell holds its
+// fluid), then the wall particles with kind = wall_kind(layer), density rho0 and mass rho0 d^D;
+// a method that keeps only some layers drops the others with keep_layer.
+template <int D, class FluidState, class WallKind, class KeepLayer = bool (*)(int)>
+void append_scene_particles(
+    const Scene& s, double rho0, World<D>& world, FluidState&& fluid_state, WallKind&& wall_kind,
+    KeepLayer&& keep_layer = [](int) { return true; }) {
   const double volume = std::pow(s.spacing, D);
   auto particles = scene_particles<D>(s);
+  {  // only the kept wall layers
+    SceneParticles<D> kept = particles;
+    kept.wall.clear(), kept.wall_layer.clear(), kept.wall_normal.clear();
+    for (std::size_t k = 0; k < particles.wall.size(); ++k)
+      if (keep_layer(particles.wall_layer[k])) {
+        kept.wall.push_back(particles.wall[k]);
+        kept.wall_layer.push_back(particles.wall_layer[k]);
+        kept.wall_normal.push_back(particles.wall_normal[k]);
+      }
+    particles = std::move(kept);
+  }
   std::size_t first = world.append(particles.fluid.size(), kFluid);
   auto& x = world.ensure(components::position);
   auto& m = world.ensure(components::mass);
   auto& rho = world.ensure(components::density);
   auto& pr = world.ensure(components::pressure);
-  world.ensure(components::velocity);
+  auto& v = world.ensure(components::velocity);
   for (std::size_t k = 0; k < particles.fluid.size(); ++k) {
     std::size_t i = first + k;
     x[i] = particles.fluid[k];
+    v[i] = particles.fluid_velocity[k];
     auto [density, pressure] = fluid_state(particles.depth[k]);
     rho[i] = density;
     pr[i] = pressure;

@@ -302,9 +302,10 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     for (int a = 0; a < D; ++a) sc.periodic[a] = *(*p)[a].value<bool>();
   sc.spacing = *get("particles", "spacing").value<double>();
   sc.method = *get("method", "name").value<std::string>();
-  const bool mps = sc.method == "mps";
-  sc.smoothing_ratio = root["particles"]["smoothing_ratio"].value_or(mps ? (D == 2 ? 3.1 : 2.1) : 1.5);
-  sc.kernel = root["particles"]["kernel"].value_or(std::string(mps ? "mps" : "wendland_c2"));
+  const bool mps = sc.method == "mps", isph = sc.method == "isph";
+  // ISPH: the ISPH paper's cubic spline with h = 1.2 d.
+  sc.smoothing_ratio = root["particles"]["smoothing_ratio"].value_or(mps ? (D == 2 ? 3.1 : 2.1) : isph ? 1.2 : 1.5);
+  sc.kernel = root["particles"]["kernel"].value_or(std::string(mps ? "mps" : isph ? "cubic_spline" : "wendland_c2"));
   if (mps && sc.kernel != "mps")
     val.fail(root["particles"]["kernel"].node(), "particles.kernel",
              "method 'mps' uses the MPS weight: kernel must be \"mps\" (or left out), not '" + sc.kernel + "'");
@@ -325,6 +326,14 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.surface_threshold = *get("method", "surface_threshold").value<double>();
   sc.source_relaxation = *get("method", "source_relaxation").value<double>();
   sc.wall_pressure_layers = static_cast<int>(*get("method", "wall_pressure_layers").value<long long>());
+  sc.isph_description = *get("method", "description").value<std::string>();
+  sc.ppe_laplacian = *get("method", "ppe_laplacian").value<std::string>();
+  sc.viscous_laplacian = *get("method", "viscous_laplacian").value<std::string>();
+  sc.pressure_gradient = *get("method", "pressure_gradient").value<std::string>();
+  sc.uncorrected_divergence_det = *get("method", "uncorrected_divergence_det").value<double>();
+  sc.free_surface_pressure = *get("method", "free_surface_pressure").value<std::string>();
+  sc.shifting_model = *get("shifting", "model").value<std::string>();
+  sc.shifting_coefficient = *get("shifting", "coefficient").value<double>();
   sc.clamp_negative_pressure = *get("method", "clamp_negative_pressure").value<bool>();
   sc.collision_distance = *get("method", "collision_distance").value<double>();
   sc.collision_restitution = *get("method", "collision_restitution").value<double>();
@@ -374,7 +383,12 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   };
   if (auto* arr = root["fluid"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
-      FluidBlock b{vec_of(*where("fluid", i, "min")), vec_of(*where("fluid", i, "max"))};
+      FluidBlock b{vec_of(*where("fluid", i, "min")), vec_of(*where("fluid", i, "max")), {}, 0.0};
+      if (auto* v = where("fluid", i, "velocity")) b.velocity = vec_of(*v);
+      b.angular_velocity = *root["fluid"][i]["angular_velocity"].value<double>();
+      if (b.angular_velocity != 0 && D != 2)
+        val.fail(where("fluid", i, "angular_velocity"), path_of("fluid", i, "angular_velocity"),
+                 "[[fluid]] #" + std::to_string(i) + ": angular_velocity is for 2D scenes");
       for (int a = 0; a < D; ++a)
         if (std::lround((b.max[a] - b.min[a]) / sc.spacing) < 1)
           val.fail(where("fluid", i, "max"), path_of("fluid", i, "max"),
@@ -394,7 +408,8 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   if (sc.fluid.empty()) val.fail(root["fluid"].node(), "fluid", "the scene has no [[fluid]] block");
   if (auto* arr = root["wall"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
-      const int covering = static_cast<int>(std::ceil(sc.support_radius() / sc.spacing - 1e-9));
+      // ISPH walls are one layer of particles with normals (ISPH paper section 4).
+      const int covering = isph ? 1 : static_cast<int>(std::ceil(sc.support_radius() / sc.spacing - 1e-9));
       WallBox w{vec_of(*where("wall", i, "min")), vec_of(*where("wall", i, "max")),
                 static_cast<int>(root["wall"][i]["layers"].value_or(static_cast<long long>(covering))),
                 *root["wall"][i]["open_top"].value<bool>()};
@@ -410,7 +425,10 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       if (!inside(lo, hi))
         val.fail(where("wall", i, "min"), path_of("wall", i, "min"),
                  "[[wall]] #" + std::to_string(i) + " with its " + std::to_string(w.layers) + " layers lies outside the domain");
-      if (thick + 1e-12 < sc.support_radius()) {
+      if (isph && w.layers != 1)
+        val.fail(root["wall"][i]["layers"].node() ? root["wall"][i]["layers"].node() : &(*arr)[i], path_of("wall", i, "layers"),
+                 "[[wall]] #" + std::to_string(i) + ": method isph uses one layer of wall particles (with normals); leave layers out or set 1");
+      if (!isph && thick + 1e-12 < sc.support_radius()) {
         std::ostringstream m;
         m << "[[wall]] #" << i << ": " << w.layers << " layers (" << thick << " m) do not cover the support radius "
           << sc.support_radius() << " m; use layers >= " << covering;

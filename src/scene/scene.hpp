@@ -17,6 +17,8 @@ class SceneError : public std::runtime_error {
 
 struct FluidBlock {
   std::vector<double> min, max;
+  std::vector<double> velocity;   // initial velocity (empty: at rest)
+  double angular_velocity = 0;    // 2D: initial rigid rotation (omega (y - yc), -omega (x - xc))
 };
 struct WallBox {
   std::vector<double> min, max;
@@ -60,6 +62,14 @@ struct Scene {
   int wall_pressure_layers = 1;
   double collision_distance = 0.5, wall_collision_distance = 0.8, collision_restitution = 0.2;
   bool clamp_negative_pressure = true;
+  // method isph
+  std::string isph_description = "ale", ppe_laplacian = "corrected", viscous_laplacian = "corrected",
+              pressure_gradient = "corrected";
+  double uncorrected_divergence_det = 0.8;
+  std::string free_surface_pressure = "extrapolated";
+  // [shifting]
+  std::string shifting_model = "density";
+  double shifting_coefficient = 0.005;
   SolverSpec solver;
   double end_time = 0, cfl = 0.2, fixed_dt = 0, dt_min = 1e-9;
   long long max_steps = 0;

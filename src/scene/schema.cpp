@@ -88,7 +88,16 @@ std::vector<SectionSpec> build() {
                 ranged({"collision_distance", K::Float, "spacing", "0.5", "mps: particles closer than this (times the spacing) that still approach collide inelastically (Koshizuka's collision model, mps_collision system); 0 leaves the system out."}, 0.0, 1.0),
                 ranged({"wall_collision_distance", K::Float, "spacing", "0.8", "mps: the collision distance between a fluid and a wall or dummy particle. Longer than between fluid particles: a particle crossing a 3D wall layer through the middle of a lattice square passes 0.71 l0 from the nearest wall particles, and without it the 3D dam break leaks through the far wall at the impact. A fluid particle at rest is one spacing from the wall particles and never collides."}, 0.0, 1.0),
                 ranged({"collision_restitution", K::Float, "", "0.2", "mps: restitution coefficient e of the collision model."}, 0.0, 1.0),
-                {"clamp_negative_pressure", K::Bool, "", "true", "mps: negative pressure from the solve is taken as 0 in the pressure gradient (no tension in a free-surface liquid)."}}});
+                {"clamp_negative_pressure", K::Bool, "", "true", "mps: negative pressure from the solve is taken as 0 in the pressure gradient (no tension in a free-surface liquid)."},
+                choice("description", "\"ale\"", "isph: how particles move (ISPH paper eqs. 6-7): lagrangian (with the fluid, w = v, no shifting), ale (w = v + dr_shift/dt with the [shifting] model, velocities Taylor-corrected to the shifted position) or eulerian (fixed particles, w = 0, the convective term in the predictor).", {"lagrangian", "ale", "eulerian"}),
+                choice("ppe_laplacian", "\"corrected\"", "isph: Laplacian of the pressure equation: standard (Morris), corrected (Fatehi-Manzari, ISPH paper eqs. 11-14) or sph2 (trace of the SPH(2) Hessian).", {"standard", "corrected", "sph2"}),
+                choice("viscous_laplacian", "\"corrected\"", "isph: Laplacian of the viscous term (eq. 15): standard, corrected or sph2.", {"standard", "corrected", "sph2"}),
+                choice("pressure_gradient", "\"corrected\"", "isph: pressure gradient of the corrector: corrected (difference form with L_i, eq. 9) or symmetric (sum (p_i + p_j) V_j gW_ij, I-SPH(2) eq. 11).", {"corrected", "symmetric"}),
+                choice("free_surface_pressure", "\"extrapolated\"", "isph: where p = 0 on the free surface: extrapolated (half a spacing outside each surface particle along its normal: p_i + d/2 N . grad p = 0) or particle (p_i = 0 at the surface particles, the ISPH paper's eq. 18, which puts the surface d/2 too deep).", {"extrapolated", "particle"}),
+                ranged({"uncorrected_divergence_det", K::Float, "", "0.8", "isph: where det(M_i) (M_i = L_i^-1) is below this, the divergence of the pressure source is not corrected (I-SPH(2) section 3(2))."}, 0.0, 1.0)}});
+  s.push_back({"shifting", false, false, "Particle shifting (isph with description = \"ale\"). docs/isph.md.",
+               {choice("model", "\"density\"", "none, or density: density-based shifting (ISPH paper eqs. 19-25).", {"none", "density"}),
+                ranged({"coefficient", K::Float, "", "0.005", "C_shift of eq. 20: dr = C_shift h (dr_w + dr_dens)."}, 0.0, 1.0)}});
   s.push_back({"time", false, true, "Time control.",
                {positive("end", "s", "", "Simulated end time.", true),
                 ranged({"cfl", K::Float, "", "0.2", "CFL number for the adaptive step dt = cfl h / (c0 + |v|max), also bounded by force and viscous limits."}, 1e-6, 1.0),
@@ -96,7 +105,7 @@ std::vector<SectionSpec> build() {
                 ranged({"max_steps", K::Integer, "", "0", "Stop after this many steps (0: no limit)."}, 0, std::nullopt),
                 non_negative("dt_min", "s", "1e-9", "An adaptive step below this is a numerical failure (dt collapse).")}});
   s.push_back({"solver", false, false,
-               "The linear solver of the pressure Poisson equation (implicit methods: mps). Ignored by wcsph. Each step the pipeline runs `ppe_assembly`, then `multigrid_setup` (or `jacobi_setup`), then `linear_solve`, each timed on its own in profile.json. docs/solvers.md.",
+               "The linear solver of the pressure Poisson equation (implicit methods: mps, isph; isph's system is not symmetric and always uses bicgstab). Ignored by wcsph. Each step the pipeline runs `ppe_assembly`, then `multigrid_setup` (or `jacobi_setup`), then `linear_solve`, each timed on its own in profile.json. docs/solvers.md.",
                {choice("krylov", "\"cg\"", "Krylov method: cg (symmetric matrices, the MPS Laplacian) or bicgstab (non-symmetric).", {"cg", "bicgstab"}),
                 choice("preconditioner", "\"multigrid\"", "none, jacobi (diagonal scaling: DCG) or multigrid (bucket-based multigrid, BMG).", {"none", "jacobi", "multigrid"}),
                 choice("cycle", "\"sw\"", "Multigrid cycle: v, w or sw (W with the scale correction A_c = P^T A P / 2 below level 1, BMG paper eq. 18).", {"v", "w", "sw"}),
@@ -115,7 +124,9 @@ std::vector<SectionSpec> build() {
                 non_negative("probe_interval", "s", "(interval / 10)", "Simulated time between probe samples in probes.csv.")}});
   s.push_back({"fluid", true, true, "A block of fluid on the lattice: particles at min + (k + 1/2) d.",
                {{"min", K::Vector, "m", "", "Lower corner.", true},
-                {"max", K::Vector, "m", "", "Upper corner.", true}}});
+                {"max", K::Vector, "m", "", "Upper corner.", true},
+                {"velocity", K::Vector, "m/s", "(at rest)", "Initial velocity of every particle of the block."},
+                {"angular_velocity", K::Float, "1/s", "0.0", "2D: initial rigid rotation about the block's centre, v = (omega (y - yc), -omega (x - xc)) (clockwise for omega > 0; the rotating square patch), added to `velocity`."}}});
   s.push_back({"wall", true, false, "A rigid container: `layers` of wall particles outside the box [min, max].",
                {{"min", K::Vector, "m", "", "Inner lower corner.", true},
                 {"max", K::Vector, "m", "", "Inner upper corner.", true},

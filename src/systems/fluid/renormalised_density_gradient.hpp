@@ -25,8 +25,7 @@ class RenormalisedDensityGradient final : public System<D> {
   void run(SystemContext<D>& ctx) override {
     auto rho = ctx.read(components::density);
     auto m = ctx.read(components::mass);
-    volume_.resize(rho.size());
-    tbb::parallel_for(std::size_t(0), rho.size(), [&](std::size_t i) { volume_[i] = m[i] / rho[i]; });
+    particle_volumes(m, rho, volume_);
     ParticleView<D> view{ctx.read(components::position), volume_, ctx.read(neighbours_resource), p_.kernel,
                          p_.domain};
     auto grad = ctx.write(components::density_gradient);

@@ -28,6 +28,11 @@
 
 namespace ryushi {
 
+namespace components {
+inline constexpr Component<Flags> free_surface{"free_surface"};      // 1 on the free surface
+inline constexpr Component<Vector> surface_normal{"surface_normal"};  // unit, out of the fluid
+}  // namespace components
+
 enum class FreeSurfaceRule { Marrone, Isph2, Mps };
 
 FreeSurfaceRule free_surface_rule(const std::string& name);  // throws std::invalid_argument

@@ -10,8 +10,6 @@
 
 namespace ryushi {
 
-inline constexpr Component<Flags> free_surface_flag{"free_surface"};
-inline constexpr Component<Vector> surface_normal_component{"surface_normal"};
 inline constexpr Component<Tensor> moment_matrix_component{"moment_matrix"};
 
 template <int D>
@@ -27,19 +25,18 @@ class FreeSurfaceDetection final : public System<D> {
   Access access() const override {
     auto a = Access{}
                  .read(components::position, components::mass, components::density, components::kind, neighbours_resource)
-                 .write(free_surface_flag, surface_normal_component);
+                 .write(components::free_surface, components::surface_normal);
     if (write_moments_) a.write(moment_matrix_component);
     return a;
   }
   void run(SystemContext<D>& ctx) override {
     auto m = ctx.read(components::mass);
     auto rho = ctx.read(components::density);
-    volume_.resize(m.size());
-    for (std::size_t i = 0; i < m.size(); ++i) volume_[i] = m[i] / rho[i];
+    particle_volumes(m, rho, volume_);
     ParticleView<D> view{ctx.read(components::position), volume_, ctx.read(neighbours_resource), context_.kernel,
                          context_.domain};
-    auto flag = ctx.write(free_surface_flag);
-    auto normal = ctx.write(surface_normal_component);
+    auto flag = ctx.write(components::free_surface);
+    auto normal = ctx.write(components::surface_normal);
     for_each_of_kind(ctx.read(components::kind), kFluid, [&](std::size_t i) {
       auto r = detect_free_surface(view, i, rule_, p_, n0_);
       flag[i] = r.surface;

@@ -5,13 +5,11 @@
 // sqrt(2 g H) is the speed a collapsing column of height H reaches (1 m/s without gravity); it
 // bounds dt while the fluid is still at rest, and it keeps each particle's predictor displacement below cfl *
 // l0, which the neighbour list's skin relies on (MpsParameters::search_radius).
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
-
 #include <algorithm>
 #include <cmath>
 
 #include "ecs/system.hpp"
+#include "systems/fluid/for_each_fluid.hpp"
 #include "systems/mps/mps_parameters.hpp"
 
 namespace ryushi {
@@ -27,15 +25,7 @@ class MpsTimeStep final : public System<D> {
   void run(SystemContext<D>& ctx) override {
     auto v = ctx.read(components::velocity);
     auto kind = ctx.read(components::kind);
-    double v2 = tbb::parallel_reduce(
-        tbb::blocked_range<std::size_t>(0, v.size(), 4096), 0.0,
-        [&](auto r, double m) {
-          for (std::size_t i = r.begin(); i != r.end(); ++i)
-            if (kind[i] == kFluid) m = std::max(m, v[i].squaredNorm());
-          return m;
-        },
-        [](double a, double b) { return std::max(a, b); });
-    ctx.write(resources::dt) = limit(std::sqrt(v2));
+    ctx.write(resources::dt) = limit(max_fluid_speed<D>(kind, v));
   }
   double limit(double vmax) const {
     // One step's gravity increment g dt = u_ref * cfl l0 / (2H) is a small fraction of u_ref, so

@@ -1,0 +1,52 @@
+#pragma once
+// Constants of an ISPH run (Morikawa, Tsuji & Asai, "Corrected ALE-ISPH with novel Neumann
+// boundary condition and density-based particle shifting technique", seed 000), fixed at scene
+// load, and the columns only ISPH uses.
+#include <cmath>
+
+#include "ecs/component.hpp"
+#include "ecs/math.hpp"
+#include "systems/kernels/kernel.hpp"
+#include "systems/neighbour/domain.hpp"
+#include "systems/neighbour/neighbour_list.hpp"
+#include "systems/operators/laplacian_choice.hpp"
+
+namespace ryushi {
+
+namespace components {
+// Unit normal of a wall particle, out of the fluid into the wall (ISPH's single wall layer).
+inline constexpr Component<Vector> wall_normal{"wall_normal"};
+}  // namespace components
+
+// The pressure stencil of a step: the neighbour list without the dry wall particles (walls above
+// the water carry p = 0 as air and must not enter a gradient or Laplacian as if they were a
+// p = 0 boundary inside the fluid's support). Built by the assembly, read by the corrector.
+inline constexpr Resource<NeighbourList> pressure_neighbours_resource{"pressure_neighbours"};
+
+// lagrangian: particles move with the fluid (w = v); ale: w = v + dr_shift/dt (eq. 7);
+// eulerian: particles stay (w = 0) and the predictor carries the convective term.
+enum class IsphDescription { Lagrangian, Ale, Eulerian };
+
+template <int D>
+struct IsphParameters {
+  Kernel<D> kernel{KernelType::CubicSpline, 1.0};
+  Domain<D> domain;
+  Vec<D> gravity = Vec<D>::Zero();
+  double spacing = 1;
+  double rho0 = 1000;
+  double nu = 0;  // kinematic viscosity
+  IsphDescription description = IsphDescription::Ale;
+  LaplacianOrder ppe_laplacian = LaplacianOrder::Corrected, viscous_laplacian = LaplacianOrder::Corrected;
+  bool symmetric_gradient = false;
+  double uncorrected_divergence_det = 0.8;
+  bool extrapolated_surface = true;  // p = 0 half a spacing outside a surface particle
+  bool wall_no_slip = true;
+  double cfl = 0.2;
+  double reference_speed = 1;  // sqrt(2 g H): bounds the first steps before anything moves
+
+  // The list is built at x^n and reused at the predicted x*: a particle moves at most cfl * d
+  // per step (IsphTimeStep), two approach by at most twice that, plus the shift.
+  double search_radius() const { return kernel.support() + 3.0 * cfl * spacing; }
+};
+
+}  // namespace ryushi

@@ -1,0 +1,285 @@
+#pragma once
+// Assembles the ISPH pressure equation (ISPH paper eq. 18) at the predicted positions x*:
+//   fluid, free surface          p = 0 at the surface: with free_surface_pressure = extrapolated
+//                                p_i + d/2 N_i . <grad p>_i = 0 (the surface lies half a spacing
+//                                outside the particle's centre, along its normal N_i; where
+//                                det M_i < 0.2, a splash, and with = particle: p_i = 0, no row,
+//                                as eq. 18 writes it)
+//   fluid, interior              -<lap p>_i = -rho0/dt <div v*>_i                      (eq. 5)
+//   wetted wall                  n_i . <grad p>_i = rho0/dt (v*_i - v_wall,i) . n_i     (eq. 17)
+// <lap p> is the scene's Laplacian as weights (operators/laplacian_choice.hpp); <div v*> is the
+// corrected divergence, uncorrected where det(M_i) < uncorrected_divergence_det (I-SPH(2) 3(2));
+// wall neighbours carry their own velocity. The wall row holds the corrected gradient at the wall
+// particle (one layer, ISPH paper section 4) with v*_i interpolated from the fluid neighbours
+// (Shepard), scaled by 1/h so its entries are of the order of the fluid rows'. A wall is wetted
+// when a fluid particle lies in front of it (within 41 degrees of -n) inside d* = 1.1 sqrt(D) d
+// (the first shell of the lattice): wall particles above the water carry p = 0 (air), not the
+// hydrostatic line continued
+// upwards, whose negative pressure pulled the surface up the walls of a resting tank; they drop
+// out of every stencil (pressure_neighbours_resource). A wall or surface row without weight along
+// its normal (diagonal below 0.1/h^2 or 0.1/d^2) becomes p_i = 0. The matrix is not symmetric
+// (BiCGSTAB); every diagonal is positive. Surface rows are scaled by 1/d^2.
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "ecs/system.hpp"
+#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/free_surface/free_surface_detection.hpp"
+#include "systems/isph/isph_parameters.hpp"
+#include "systems/neighbour/neighbour_list.hpp"
+#include "systems/operators/gradient.hpp"
+#include "systems/pressure/pressure_system.hpp"
+
+namespace ryushi {
+
+template <int D>
+class IsphPressureEquation final : public System<D> {
+ public:
+  explicit IsphPressureEquation(const IsphParameters<D>& p) : p_(p) {}
+  std::string name() const override { return "ppe_assembly"; }
+  Access access() const override {
+    return Access{}
+        .read(components::position, components::velocity, components::mass, components::density,
+              components::kind, components::id, components::free_surface, components::surface_normal,
+              components::wall_normal,
+              neighbours_resource, resources::dt)
+        .write(pressure_system_resource, pressure_neighbours_resource);
+  }
+  void initialise(World<D>&, Resources& res) override {
+    res.ensure(pressure_system_resource);
+    res.ensure(pressure_neighbours_resource);
+  }
+
+  void run(SystemContext<D>& ctx) override {
+    // The step's own dt: the velocity-divergence source changes in proportion to the step (the
+    // gravity and the motion it integrates), unlike MPS's relaxed density error.
+    const double dt = ctx.read(resources::dt);
+    const auto& full = ctx.read(neighbours_resource);
+    auto x = ctx.read(components::position);
+    auto v = ctx.read(components::velocity);
+    auto m = ctx.read(components::mass);
+    auto rho = ctx.read(components::density);
+    auto kind = ctx.read(components::kind);
+    auto surface = ctx.read(components::free_surface);
+    auto normal = ctx.read(components::wall_normal);
+    auto& sys = ctx.write(pressure_system_resource);
+    const std::size_t n = x.size();
+    particle_volumes(m, rho, volume_);
+    ParticleView<D> full_view{x, volume_, full, p_.kernel, p_.domain};
+    const double h = p_.kernel.h(), support = p_.kernel.support(), d = p_.spacing;
+    const double shell = 1.1 * std::sqrt(double(D)) * d;
+    auto surface_normal = ctx.read(components::surface_normal);
+
+    // Which particles carry an unknown: interior fluid, surface fluid whose pressure is
+    // extrapolated, and wetted walls.
+    unknown_.assign(n, 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](auto range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        if (kind[i] == kFluid) {
+          unknown_[i] = !surface[i] || (p_.extrapolated_surface && moment_matrix(full_view, i).determinant() >= 0.2);
+        } else if (kind[i] == kWall) {
+          for (auto j : full.of(i)) {
+            Vec<D> r = full_view.r(i, j);
+            if (kind[j] == kFluid && r.norm() < shell && -r.dot(normal[i]) > 0.75 * r.norm()) {
+              unknown_[i] = 1;
+              break;
+            }
+          }
+        }
+      }
+    });
+    const auto& nl = restrict_to_wetted(kind, full, ctx.write(pressure_neighbours_resource));
+    ParticleView<D> view{x, volume_, nl, p_.kernel, p_.domain};
+    // v* seen at wall particles: the Shepard interpolation of their fluid neighbours' v*, used in
+    // the Neumann rows and in the fluid rows' divergence. With the wall's own (zero) velocity
+    // there, the fluid falling by g dt towards the floor read as compression and doubled the
+    // pressure at the bottom row (the Neumann rows already hold the fluid up).
+    v_star_.resize(n);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](auto range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        v_star_[i] = v[i];
+        if (kind[i] != kWall) continue;
+        Vec<D> sum = Vec<D>::Zero();
+        double weight = 0;
+        for (auto j : nl.of(i))
+          if (kind[j] == kFluid) {
+            double vw = volume_[j] * p_.kernel.w(view.r(i, j).norm());
+            sum += vw * v[j];
+            weight += vw;
+          }
+        if (weight > 0) v_star_[i] = sum / weight;
+      }
+    });
+    row_of_.assign(n, kNoRow);
+    sys.particle_of_row.clear();
+    for (std::size_t i = 0; i < n; ++i)
+      if (unknown_[i]) {
+        row_of_[i] = static_cast<std::uint32_t>(sys.particle_of_row.size());
+        sys.particle_of_row.push_back(static_cast<std::uint32_t>(i));
+      }
+    const std::size_t rows = sys.particle_of_row.size();
+    std::size_t stride = 1;
+    for (std::size_t r = 0; r < rows; ++r) stride = std::max(stride, nl.of(sys.particle_of_row[r]).size() + 1);
+    cols_.resize(rows * stride);
+    vals_.resize(rows * stride);
+    counts_.assign(rows, 0);
+    sys.b.resize(rows);
+    sys.coordinates.resize(rows * D);
+
+    // Pass 1: each row's entries into its slot range (the weights are computed once).
+    std::atomic<std::size_t> bad_row_found{kNoRow};
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 256), [&](auto range) {
+      std::vector<double> w;
+      std::vector<Vec<D>> g;
+      std::vector<std::pair<std::uint32_t, double>> entries;
+      std::size_t bad_row = kNoRow;
+      for (std::size_t r = range.begin(); r != range.end(); ++r) {
+        const std::size_t i = sys.particle_of_row[r];
+        auto nb = nl.of(i);
+        entries.clear();
+        double diagonal = 0, rhs = 0;
+        if (kind[i] == kFluid && surface[i]) {
+          // p_i + d/2 N . sum_k g_k (p_k - p_i) = 0, times 1/d^2.
+          gradient_weights_corrected(view, i, g);
+          diagonal = 1.0 / (d * d);
+          for (std::size_t k = 0; k < nb.size(); ++k) {
+            const double along = 0.5 * surface_normal[i].dot(g[k]) / d;
+            diagonal -= along;
+            if (row_of_[nb[k]] != kNoRow && along != 0) entries.emplace_back(row_of_[nb[k]], along);
+          }
+          rhs = 0;
+        } else if (kind[i] == kFluid) {
+          laplacian_weights(p_.ppe_laplacian, view, i, w);
+          for (std::size_t k = 0; k < nb.size(); ++k) {
+            diagonal += w[k];
+            if (row_of_[nb[k]] != kNoRow && w[k] != 0) entries.emplace_back(row_of_[nb[k]], -w[k]);
+          }
+          const bool corrected = moment_matrix(view, i).determinant() >= p_.uncorrected_divergence_det;
+          double div = 0;
+          if (corrected) {
+            gradient_weights_corrected(view, i, g);
+            for (std::size_t k = 0; k < nb.size(); ++k) div += g[k].dot(v_star_[nb[k]] - v[i]);
+          } else {
+            for (std::size_t k = 0; k < nb.size(); ++k)
+              div += volume_[nb[k]] * view.grad_w(view.r(i, nb[k])).dot(v_star_[nb[k]] - v[i]);
+          }
+          rhs = -p_.rho0 / dt * div;
+        } else {
+          gradient_weights_corrected(view, i, g);
+          for (std::size_t k = 0; k < nb.size(); ++k) {
+            const std::size_t j = nb[k];
+            const double along = normal[i].dot(g[k]) / h;
+            diagonal -= along;
+            if (row_of_[j] != kNoRow && along != 0) entries.emplace_back(row_of_[j], along);
+          }
+          rhs = p_.rho0 / dt * (v_star_[i] - v[i]).dot(normal[i]) / h;
+        }
+        if (!std::isfinite(diagonal) || !std::isfinite(rhs)) bad_row = std::min(bad_row, r);
+        // A boundary row (surface or wall) that lost its weight along the normal (a thin splash,
+        // a wall whose wetted neighbours lie beside it) is a Dirichlet row p_i = 0 instead.
+        if (kind[i] != kFluid || surface[i]) {
+          const double scale = kind[i] == kFluid ? 1.0 / (d * d) : 1.0 / (h * h);
+          if (!(diagonal > 0.1 * scale)) {
+            entries.clear();
+            diagonal = 1.0 / (d * d);
+            rhs = 0;
+          }
+        } else if (!(diagonal > 0)) {
+          bad_row = std::min(bad_row, r);
+        }
+        entries.emplace_back(static_cast<std::uint32_t>(r), diagonal);
+        std::sort(entries.begin(), entries.end());
+        // Neighbours listed twice cannot occur; merge equal columns all the same (periodic images).
+        std::size_t k = r * stride, c = 0;
+        for (auto& [col, val] : entries) {
+          if (c > 0 && cols_[k + c - 1] == col) {
+            vals_[k + c - 1] += val;
+          } else {
+            cols_[k + c] = col;
+            vals_[k + c++] = val;
+          }
+        }
+        counts_[r] = c;
+        sys.b[r] = rhs;
+        for (int a = 0; a < D; ++a) sys.coordinates[r * D + a] = x[i][a];
+      }
+      for (auto seen = bad_row_found.load(); bad_row < seen && !bad_row_found.compare_exchange_weak(seen, bad_row);) {
+      }
+    });
+    if (bad_row_found != kNoRow) report_bad_row(ctx, sys.particle_of_row[bad_row_found], x);
+    // Pass 2: compact into CSR.
+    auto& A = sys.A;
+    A.rows = A.cols = rows;
+    A.row_ptr.assign(rows + 1, 0);
+    for (std::size_t r = 0; r < rows; ++r) A.row_ptr[r + 1] = A.row_ptr[r] + counts_[r];
+    A.col.resize(A.row_ptr[rows]);
+    A.val.resize(A.row_ptr[rows]);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 1024), [&](auto range) {
+      for (std::size_t r = range.begin(); r != range.end(); ++r)
+        for (std::size_t c = 0; c < counts_[r]; ++c) {
+          A.col[A.row_ptr[r] + c] = cols_[r * stride + c];
+          A.val[A.row_ptr[r] + c] = vals_[r * stride + c];
+        }
+    });
+    sys.dimension = D;
+    sys.bucket_width = support;
+    sys.symmetric = false;
+  }
+
+ private:
+  // The list without dry walls (kind wall, no unknown): they drop out of every stencil.
+  const NeighbourList& restrict_to_wetted(std::span<const std::int32_t> kind, const NeighbourList& full,
+                                          NeighbourList& out) const {
+    const std::size_t n = full.size();
+    auto keeps = [&](std::size_t j) { return kind[j] != kWall || unknown_[j]; };
+    out.radius = full.radius;
+    out.offsets.assign(n + 1, 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](auto range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        std::uint32_t c = 0;
+        if (keeps(i))
+          for (auto j : full.of(i)) c += keeps(j);
+        out.offsets[i + 1] = c;
+      }
+    });
+    for (std::size_t i = 0; i < n; ++i) out.offsets[i + 1] += out.offsets[i];
+    out.indices.resize(out.offsets[n]);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](auto range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        if (!keeps(i)) continue;
+        auto k = out.offsets[i];
+        for (auto j : full.of(i))
+          if (keeps(j)) out.indices[k++] = j;
+      }
+    });
+    return out;
+  }
+
+  [[noreturn]] void report_bad_row(SystemContext<D>& ctx, std::size_t i, std::span<const Vec<D>> x) const {
+    std::ostringstream m;
+    m << (ctx.read(components::kind)[i] == kFluid ? "fluid" : "wall") << " particle id "
+      << ctx.read(components::id)[i] << " at (";
+    for (int a = 0; a < D; ++a) m << (a ? ", " : "") << x[i][a];
+    m << ") has a pressure row without a positive finite diagonal or right-hand side (a particle on top of "
+         "another, or a non-finite velocity)";
+    throw std::runtime_error(m.str());
+  }
+
+  static constexpr std::uint32_t kNoRow = UINT32_MAX;
+  IsphParameters<D> p_;
+  std::vector<double> volume_;
+  std::vector<Vec<D>> v_star_;
+  std::vector<std::uint8_t> unknown_;
+  std::vector<std::uint32_t> row_of_;
+  std::vector<std::uint32_t> cols_;
+  std::vector<double> vals_;
+  std::vector<std::size_t> counts_;
+};
+
+}  // namespace ryushi
