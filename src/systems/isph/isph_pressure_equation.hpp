@@ -156,6 +156,12 @@ class IsphPressureEquation final : public System<D> {
           rhs = 0;
         } else if (kind[i] == kFluid) {
           laplacian_weights(p_.ppe_laplacian, view, i, w);
+          // The corrected and SPH(2) weights are not all positive: on a distorted support their
+          // sum (the diagonal) can vanish or turn negative, and the row would make the matrix
+          // singular. That row takes the standard (Morris) weights.
+          double sum = 0;
+          for (double wk : w) sum += wk;
+          if (!(sum > 0)) laplacian_weights_standard(view, i, w);
           for (std::size_t k = 0; k < nb.size(); ++k) {
             diagonal += w[k];
             if (row_of_[nb[k]] != kNoRow && w[k] != 0) entries.emplace_back(row_of_[nb[k]], -w[k]);
@@ -191,7 +197,7 @@ class IsphPressureEquation final : public System<D> {
             rhs = 0;
           }
         } else if (!(diagonal > 0)) {
-          bad_row = std::min(bad_row, r);
+          bad_row = std::min(bad_row, r);  // even the standard weights: particles on top of each other
         }
         entries.emplace_back(static_cast<std::uint32_t>(r), diagonal);
         std::sort(entries.begin(), entries.end());
@@ -266,8 +272,8 @@ class IsphPressureEquation final : public System<D> {
     m << (ctx.read(components::kind)[i] == kFluid ? "fluid" : "wall") << " particle id "
       << ctx.read(components::id)[i] << " at (";
     for (int a = 0; a < D; ++a) m << (a ? ", " : "") << x[i][a];
-    m << ") has a pressure row without a positive finite diagonal or right-hand side (a particle on top of "
-         "another, or a non-finite velocity)";
+    m << ") has a pressure row without a finite diagonal or right-hand side (a particle on top of another, or a "
+         "non-finite velocity)";
     throw std::runtime_error(m.str());
   }
 
