@@ -81,3 +81,44 @@ TEST_CASE("kernels: normalised, differentiable, compact, continuous at joints (2
   }
   CHECK_THROWS_AS(kernel_from_name("gaussian"), std::invalid_argument);
 }
+
+// Pointwise values against the kernels' formulas, written out here (the normalisation test alone
+// passes a wrong but normalised shape): W(0) and W at the joints, with h = 0.3.
+TEST_CASE("kernels: W(0) and W at the joints match the published formulas (2D and 3D)") {
+  const double h = 0.3, pi = std::numbers::pi, h2 = h * h, h3 = h * h * h;
+  struct Point {
+    KernelType type;
+    int dimension;
+    double r, expected;
+  };
+  const Point points[] = {
+      // cubic spline (seed 002 eq. 11): sigma (1 - 3/2 q^2 + 3/4 q^3) for q < 1, sigma/4 (2 - q)^3 to 2
+      {KernelType::CubicSpline, 2, 0.0, 10 / (7 * pi * h2)},
+      {KernelType::CubicSpline, 2, h, 10 / (7 * pi * h2) * 0.25},
+      {KernelType::CubicSpline, 3, 0.0, 1 / (pi * h3)},
+      {KernelType::CubicSpline, 3, h, 1 / (pi * h3) * 0.25},
+      {KernelType::CubicSpline, 3, 1.5 * h, 1 / (pi * h3) * 0.25 * 0.125},
+      // quintic spline (Morris 1997): sigma ((3-q)^5 - 6 (2-q)^5 + 15 (1-q)^5), 7/(478 pi h^2), 1/(120 pi h^3)
+      {KernelType::QuinticSpline, 2, 0.0, 7 / (478 * pi * h2) * (243 - 6 * 32 + 15)},
+      {KernelType::QuinticSpline, 2, h, 7 / (478 * pi * h2) * (32 - 6)},
+      {KernelType::QuinticSpline, 2, 2 * h, 7 / (478 * pi * h2)},
+      {KernelType::QuinticSpline, 3, h, 1 / (120 * pi * h3) * 26},
+      // Wendland C2: sigma (1 - q/2)^4 (2q + 1), 7/(4 pi h^2), 21/(16 pi h^3)
+      {KernelType::WendlandC2, 2, 0.0, 7 / (4 * pi * h2)},
+      {KernelType::WendlandC2, 2, h, 7 / (4 * pi * h2) * 3 / 16},
+      {KernelType::WendlandC2, 3, h, 21 / (16 * pi * h3) * 3 / 16},
+      // spiky (shallow-water paper eq. 8): sigma (2 - q)^3, 5/(16 pi h^2), 15/(64 pi h^3)
+      {KernelType::Spiky, 2, 0.0, 5 / (16 * pi * h2) * 8},
+      {KernelType::Spiky, 3, h, 15 / (64 * pi * h3)},
+      // MPS weight (MPS paper eq. 5): sigma (h/r - 1), 1/(pi h^2), 3/(2 pi h^3)
+      {KernelType::Mps, 2, 0.5 * h, 1 / (pi * h2)},
+      {KernelType::Mps, 3, 0.25 * h, 3 / (2 * pi * h3) * 3},
+  };
+  for (auto& p : points) {
+    double w = p.dimension == 2 ? Kernel<2>(p.type, h).w(p.r) : Kernel<3>(p.type, h).w(p.r);
+    CAPTURE(static_cast<int>(p.type));
+    CAPTURE(p.dimension);
+    CAPTURE(p.r);
+    CHECK(std::abs(w / p.expected - 1) < 1e-12);
+  }
+}

@@ -34,7 +34,8 @@ std::string error_of(std::string text, const std::string& from = "", const std::
     REQUIRE(pos != std::string::npos);
     text.replace(pos, from.size(), to);
   }
-  auto path = test::scratch("scene_errors") / "bad.toml";
+  // Four test cases call this from parallel ctest processes: each call gets its own folder.
+  auto path = test::unique_scratch("scene_errors") / "bad.toml";
   test::write_text(path, text);
   try {
     load_scene(path.string(), sets);

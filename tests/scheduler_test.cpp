@@ -82,11 +82,16 @@ TEST_CASE("scheduler: dependent systems never overlap, independent ones do") {
   auto after = std::make_shared<ToySystem>("reads_a_and_b", Access{}.read(ca, cb).write(cc));
   auto war = std::make_shared<ToySystem>("overwrites_a", Access{}.write(ca));
   Scheduler<2> s({a, b, after, war}, w, res, prof);
+  // Overlap needs two CPUs; the edges hold on any machine.
+  const bool two_cpus = std::thread::hardware_concurrency() >= 2;
+  if (!two_cpus) MESSAGE("one CPU: the overlap of the independent systems is not checked, the edges are");
   for (int step = 0; step < 5; ++step) {
     a_started = b_started = false;
     s.step();
-    CHECK(a_saw_b);
-    CHECK(b_saw_a);
+    if (two_cpus) {
+      CHECK(a_saw_b);
+      CHECK(b_saw_a);
+    }
     CHECK(after->begin >= a->end);
     CHECK(after->begin >= b->end);
     CHECK(war->begin >= after->end);

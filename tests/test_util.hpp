@@ -1,5 +1,6 @@
 #pragma once
 // Helpers shared by the tests: scratch directories, scene files, CSV and JSON look-ups.
+#include <doctest/doctest.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -26,6 +27,13 @@ inline fs::path scratch(const std::string& name) {
   return p;
 }
 
+// A fresh scratch directory whose name no other test process or call uses (pid and counter):
+// for helpers that several test cases call while ctest runs them as parallel processes.
+inline fs::path unique_scratch(const std::string& prefix) {
+  static std::atomic<int> counter{0};
+  return scratch(prefix + "_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+}
+
 inline std::string read_text(const fs::path& p) {
   std::ifstream in(p);
   std::stringstream ss;
@@ -45,33 +53,54 @@ inline std::string block_scene(const std::string& fluid_min, const std::string& 
          "[time]\nend = " + std::to_string(end) + "\n[[fluid]]\nmin = " + fluid_min + "\nmax = " + fluid_max + "\n" + extra;
 }
 
-// Columns of a CSV with a header row.
-inline std::map<std::string, std::vector<double>> read_csv(const fs::path& p) {
+// Columns of a CSV with a header row. Asking for a column the file does not have, or one with no
+// rows, fails the test (REQUIRE): a check on a missing probe must not pass on an empty vector.
+struct Csv {
+  std::map<std::string, std::vector<double>> columns;
+  std::string file;
+  const std::vector<double>& operator[](const std::string& name) const {
+    auto it = columns.find(name);
+    REQUIRE_MESSAGE(it != columns.end(), file << " has no column '" << name << "'");
+    REQUIRE_MESSAGE(!it->second.empty(), file << ": column '" << name << "' has no rows");
+    return it->second;
+  }
+  std::size_t count(const std::string& name) const { return columns.count(name); }
+};
+inline Csv read_csv(const fs::path& p) {
   std::ifstream in(p);
+  REQUIRE_MESSAGE(in.good(), "cannot open " << p);
   std::string line;
   std::getline(in, line);
   std::vector<std::string> names;
   std::stringstream hs(line);
   for (std::string n; std::getline(hs, n, ',');) names.push_back(n);
-  std::map<std::string, std::vector<double>> cols;
+  Csv csv;
+  csv.file = p.string();
+  for (auto& n : names) csv.columns[n];
   while (std::getline(in, line)) {
     std::stringstream ls(line);
     std::size_t k = 0;
-    for (std::string v; std::getline(ls, v, ',') && k < names.size(); ++k) cols[names[k]].push_back(std::strtod(v.c_str(), nullptr));
+    for (std::string v; std::getline(ls, v, ',') && k < names.size(); ++k)
+      csv.columns[names[k]].push_back(std::strtod(v.c_str(), nullptr));
   }
-  return cols;
+  return csv;
 }
 
-// The first "key": value in a JSON text (flat look-up is enough for summary.json).
+// The first "key": value in a JSON text (flat look-up is enough for summary.json). A missing key
+// fails the test (REQUIRE): a key that disappears must not read as 0 or "".
 inline std::string json_raw(const std::string& json, const std::string& key) {
   auto at = json.find("\"" + key + "\": ");
-  if (at == std::string::npos) return "";
+  REQUIRE_MESSAGE(at != std::string::npos, "no key '" << key << "' in the JSON");
   at += key.size() + 4;
   if (json[at] == '"') return json.substr(at + 1, json.find('"', at + 1) - at - 1);
   return json.substr(at, json.find_first_of(",\n}", at) - at);
 }
 inline double json_number(const std::string& json, const std::string& key) {
-  return std::strtod(json_raw(json, key).c_str(), nullptr);
+  auto raw = json_raw(json, key);
+  char* end = nullptr;
+  double value = std::strtod(raw.c_str(), &end);
+  REQUIRE_MESSAGE(end != raw.c_str(), "key '" << key << "' is not a number: " << raw);
+  return value;
 }
 
 // Runs a shell command; returns its exit status and captures stderr+stdout.
