@@ -31,7 +31,11 @@ TEST_CASE("validation: 2D dam break surge front follows Martin and Moyce, runs p
   auto summary = test::read_text(out / "summary.json");
   CHECK(test::json_raw(summary, "status") == "completed");
   CHECK(test::json_number(summary, "simulated_time") / t_scale >= 6.0);
-  CHECK(test::json_number(summary, "fluid_mass_relative_change") == 0.0);  // exactly
+  // Mass is exact by construction; the volume sum m/rho and the density can drift. WCSPH's sound
+  // speed (10 times the largest speed) keeps density variations near 1% (Mach^2): measured +0.2%
+  // volume and 0.48% peak deviation through the impact at a/d = 20.
+  CHECK(std::abs(test::json_number(summary, "fluid_volume_relative_change")) < 0.01);
+  CHECK(test::json_number(summary, "max_density_deviation") < 0.02);
 
   auto coarse = test::front_of(test::read_csv(out / "probes.csv"), a, t_scale);
   CHECK(coarse.Z.front() == doctest::Approx(1.0));
@@ -67,7 +71,7 @@ TEST_CASE("validation: 3D dam break scene completes at coarse resolution") {
   auto summary = test::read_text(out / "summary.json");
   CHECK(test::json_raw(summary, "status") == "completed");
   CHECK(test::json_number(summary, "simulated_time") == doctest::Approx(test::json_number(summary, "end_time")));
-  CHECK(test::json_number(summary, "fluid_mass_relative_change") == 0.0);
+  CHECK(std::abs(test::json_number(summary, "fluid_volume_relative_change")) < 0.01);  // as in 2D
   // The front has crossed the tank (4a = 1 m) by the end: the 3D flow is a dam break, not a
   // column standing still.
   auto probes = test::read_csv(out / "probes.csv");

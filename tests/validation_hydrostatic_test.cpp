@@ -40,7 +40,12 @@ TEST_CASE("validation: hydrostatic tank settles to rho g depth within 1 percent"
   CHECK(std::abs(probes["surface"].back() - surface) < 0.1 * 0.025);
   auto summary = test::read_text(out / "summary.json");
   CHECK(test::json_number(summary, "max_speed") < 1e-3 * std::sqrt(g * H));
-  CHECK(test::json_number(summary, "fluid_mass_relative_change") == 0.0);
+  // Mass is a constant column (exact by construction); what can drift is the volume sum m/rho
+  // and the density. At rest nothing should compress further than the hydrostatic start:
+  // measured -1.2e-5 volume change and 0.49% peak density deviation (rho g H / (rho c0^2) with
+  // c0 = 10 sqrt(2 g H) gives 0.5%); bounds 1e-3 and 1% (WCSPH's c0 keeps density within 1%).
+  CHECK(std::abs(test::json_number(summary, "fluid_volume_relative_change")) < 1e-3);
+  CHECK(test::json_number(summary, "max_density_deviation") < 0.01);
   MESSAGE("final probe errors: ",
           [&] {
             std::string s;

@@ -84,7 +84,7 @@ struct HealthCheck {
 
 struct Diagnostics {
   std::size_t fluid = 0, walls = 0;
-  double fluid_mass = 0, kinetic_energy = 0, max_speed = 0, max_density_deviation = 0;
+  double fluid_mass = 0, fluid_volume = 0, kinetic_energy = 0, max_speed = 0, max_density_deviation = 0;
 };
 
 template <int D>
@@ -97,20 +97,22 @@ Diagnostics diagnose(const World<D>& w, double rho0) {
   auto& id = w.column(components::id);
   // The mass is summed in id order, so reordering particles by cell cannot change the total
   // by round-off: an unchanged set of particles gives a bit-identical mass.
-  std::vector<double> mass_by_id;
+  std::vector<double> mass_by_id, volume_by_id;
   for (std::size_t i = 0; i < w.size(); ++i) {
     if (kind[i] != kFluid) {
       ++d.walls;
       continue;
     }
     ++d.fluid;
-    if (mass_by_id.size() <= std::size_t(id[i])) mass_by_id.resize(id[i] + 1, 0.0);
+    if (mass_by_id.size() <= std::size_t(id[i])) mass_by_id.resize(id[i] + 1, 0.0), volume_by_id.resize(id[i] + 1, 0.0);
     mass_by_id[id[i]] = m[i];
+    volume_by_id[id[i]] = rho[i] > 0 ? m[i] / rho[i] : 0.0;
     d.kinetic_energy += 0.5 * m[i] * v[i].squaredNorm();
     d.max_speed = std::max(d.max_speed, v[i].norm());
     d.max_density_deviation = std::max(d.max_density_deviation, std::abs(rho[i] / rho0 - 1));
   }
   for (double mi : mass_by_id) d.fluid_mass += mi;
+  for (double vi : volume_by_id) d.fluid_volume += vi;
   return d;
 }
 
@@ -343,6 +345,8 @@ class Runner {
     w.key("fluid_mass_initial").value(initial_.fluid_mass);
     w.key("fluid_mass").value(now.fluid_mass);
     w.key("fluid_mass_relative_change").value(initial_.fluid_mass > 0 ? (now.fluid_mass - initial_.fluid_mass) / initial_.fluid_mass : 0.0);
+    w.key("fluid_volume").value(now.fluid_volume);
+    w.key("fluid_volume_relative_change").value(initial_.fluid_volume > 0 ? (now.fluid_volume - initial_.fluid_volume) / initial_.fluid_volume : 0.0);
     w.key("kinetic_energy").value(now.kinetic_energy);
     w.key("max_speed").value(now.max_speed);
     w.key("max_density_deviation").value(now.max_density_deviation);
