@@ -66,7 +66,9 @@ TEST_CASE("multigrid: MGCG and DCG agree, and the error against the exact soluti
     MESSAGE("n = ", n, ": MGCG ", a.status.iterations, " it, DCG ", b.status.iterations, " it, error ", a.error,
             ", max |x_mg - x_dcg| / max|x| ", diff / norm);
     CHECK(diff / norm < 1e-7);
-    CHECK(a.error < previous);
+    CHECK(a.status.iterations < b.status.iterations);  // measured 51/47/38 against 68/131/251
+    // Halving the spacing: measured error ratios 0.39 and 0.59 (first order at least).
+    CHECK(a.error < 0.75 * previous);
     previous = a.error;
   }
 }
@@ -77,6 +79,9 @@ TEST_CASE("multigrid: S-W cycle iteration counts barely grow with N (2D 64^2 -> 
   MESSAGE("2D: ", small2, " -> ", large2, " iterations; 3D: ", small3, " -> ", large3);
   CHECK(large2 <= 1.3 * small2);
   CHECK(large3 <= 1.3 * small3);
+  // Absolute caps a 2x regression breaks (measured 21 and 17).
+  CHECK(large2 <= 30);
+  CHECK(large3 <= 25);
 }
 
 TEST_CASE("multigrid: a float preconditioner still takes double CG to a relative residual of 1e-12") {
@@ -150,7 +155,9 @@ TEST_CASE("multigrid: BiCGSTAB with BMG solves the non-symmetric corrected-Lapla
             " Neumann rows, relative L2 error vs exact ", err);
     CHECK(s.converged);
     CHECK(j.converged);
-    CHECK(err < previous);  // the discretisation error, not the solver's, and it falls with d
+    CHECK(s.iterations < j.iterations);  // measured 38/32/24 against 50/108/209
+    // The discretisation error, not the solver's: measured ratios 0.48 and 0.49 per halving.
+    CHECK(err < 0.6 * previous);
     previous = err;
   }
 }

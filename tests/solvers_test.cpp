@@ -92,7 +92,10 @@ TEST_CASE("solvers: CG and diagonally scaled CG reach Eigen's direct solution") 
   CHECK(dcg.converged);
   CHECK(max_difference(x_dcg, exact_b) < 1e-8 * exact_b.cwiseAbs().maxCoeff());
   MESSAGE("CG ", cg.iterations, " iterations (converged ", cg.converged, "), DCG ", dcg.iterations);
-  CHECK(dcg.iterations * 4 < cg.iterations);
+  // Measured: DCG 163 iterations; plain CG does not converge in 20000. A DCG that needs 25% more
+  // than measured, or a CG that converges within 10x of it, is a regression.
+  CHECK(dcg.iterations <= 200);
+  CHECK((!cg.converged || cg.iterations > 10 * dcg.iterations));
 }
 
 TEST_CASE("solvers: BiCGSTAB solves a non-symmetric system") {
