@@ -7,6 +7,7 @@
 #include "app/run.hpp"
 #include "systems/free_surface/free_surface_detection.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
+#include "h5_read.hpp"
 #include "test_util.hpp"
 #include "verification/free_surface_check.hpp"
 
@@ -62,4 +63,26 @@ TEST_CASE("free surface: the registered system writes flags and normals in a sce
   opt.quiet = true;
   REQUIRE(run_scene(opt) == kExitDone);
   CHECK(test::read_text(dir / "out" / "particles.xdmf").find(":/free_surface") != std::string::npos);
+  // Read back after the step: the block's outer ring is flagged, its inside is not, and the
+  // normals of the flagged edge particles point out of the block (an 8 x 8 block, d = 0.05).
+  auto frame = dir / "out" / "frames" / "frame_00001.h5";
+  auto x = test::read_dataset(frame, "position").values, n = test::read_dataset(frame, "surface_normal").values;
+  auto flag = test::read_dataset(frame, "free_surface").values, kind = test::read_dataset(frame, "kind").values;
+  int outer = 0, inner_flagged = 0, outward = 0;
+  for (std::size_t i = 0; i < kind.size(); ++i) {
+    if (kind[i] != 0) continue;
+    const double px = x[3 * i], py = x[3 * i + 1];
+    const bool edge = px < 0.25 || px > 0.55 || py < 0.25 || py > 0.55;
+    const bool deep = px > 0.3 && px < 0.5 && py > 0.3 && py < 0.5;
+    if (edge) {
+      ++outer;
+      CHECK_MESSAGE(flag[i] == 1, "edge particle at (" << px << ", " << py << ") not flagged");
+      // Out of the block: the normal points away from its centre (0.4, 0.4).
+      if (n[3 * i] * (px - 0.4) + n[3 * i + 1] * (py - 0.4) > 0) ++outward;
+    }
+    if (deep && flag[i] == 1) ++inner_flagged;
+  }
+  CHECK(outer == 28);
+  CHECK(outward == outer);
+  CHECK(inner_flagged == 0);
 }

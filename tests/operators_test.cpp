@@ -110,14 +110,32 @@ TEST_CASE("operators: corrected gradient, divergence, Laplacian and SPH(2) are e
   check_exactness<3>();
 }
 
-TEST_CASE("operators: MPS Laplacian of |x|^2 on the reference lattice is exactly 2d") {
-  Cloud<2> c(0.05, 0.0, KernelType::Mps, 3.1);  // r_e = 3.1 l0
-  auto v = c.view();
-  auto ref = mps_reference<2>(c.kernel, 0.05);
-  std::vector<double> f(c.x.size());
-  for (std::size_t i = 0; i < f.size(); ++i) f[i] = c.x[i].squaredNorm();
-  for (std::size_t i = 0; i < f.size(); ++i)
-    if (c.interior(i)) CHECK(laplacian_mps(v, f, i, ref.n0, ref.lambda0) == doctest::Approx(4.0).epsilon(1e-10));
+// lambda0 is defined so that the MPS Laplacian of |x|^2 is 2d on the reference lattice (a check
+// of the construction only). On 10%-disordered particles the operator is not consistent (its
+// error does not vanish with l0): measured mean 4.11 (+2.8%) and RMS deviation 28% of 2d. The
+// bounds (mean 5%, RMS 40%) catch a broken n0 or lambda0, which moves the mean by its own error.
+TEST_CASE("operators: MPS Laplacian of |x|^2 is 2d on the reference lattice and on average on disordered particles") {
+  for (double disorder : {0.0, 0.1}) {
+    CAPTURE(disorder);
+    Cloud<2> c(0.05, disorder, KernelType::Mps, 3.1);  // r_e = 3.1 l0
+    auto v = c.view();
+    auto ref = mps_reference<2>(c.kernel, 0.05);
+    std::vector<double> f(c.x.size());
+    for (std::size_t i = 0; i < f.size(); ++i) f[i] = c.x[i].squaredNorm();
+    double sum = 0, sum2 = 0;
+    int n = 0;
+    for (std::size_t i = 0; i < f.size(); ++i)
+      if (c.interior(i)) {
+        double lap = laplacian_mps(v, f, i, ref.n0, ref.lambda0);
+        if (disorder == 0) CHECK(std::abs(lap / 4.0 - 1) < 1e-10);
+        sum += lap, sum2 += lap * lap, ++n;
+      }
+    REQUIRE(n > 50);
+    double mean = sum / n, rms = std::sqrt(std::max(0.0, sum2 / n - mean * mean));
+    MESSAGE("disorder ", disorder, ": mean ", mean, ", RMS deviation ", rms / 4.0, " of 2d");
+    CHECK(std::abs(mean / 4.0 - 1) < 0.05);
+    CHECK(rms / 4.0 < (disorder == 0 ? 1e-9 : 0.4));
+  }
 }
 
 TEST_CASE("operators: an ill-conditioned support falls back to the uncorrected operator") {
@@ -184,7 +202,7 @@ TEST_CASE("patch test 3D: the same orders with the 3D Franke analogue at 1/20 ..
   CHECK(order("gradient-corrected", 0.0) >= 1.8);
 }
 
-TEST_CASE("patch-test command prints the table and the order line") {
+TEST_CASE("patch test: an unknown operator is refused and the order fit is exact on a clean power law") {
   PatchTestOptions o;
   o.op = "no-such-operator";
   CHECK_THROWS_AS(run_patch_test(o), std::invalid_argument);
