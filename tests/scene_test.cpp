@@ -133,21 +133,23 @@ TEST_CASE("scene: unreadable files") {
   }
 }
 
-TEST_CASE("run: bad input exits with code 2 and creates no output directory") {
+TEST_CASE("run: bad input exits with code 2, says where, and creates no output directory") {
   auto dir = test::scratch("bad_run");
   auto scene = dir.string() + "_scene.toml";
-  test::write_text(scene, error_of(valid_with_domain_min()).empty() ? std::string(kValid) : "");
-  RunOptions opt;
-  opt.scene = scene;
-  opt.out_dir = (dir / "out").string();
-  opt.quiet = true;
-  CHECK(run_scene(opt) == kExitBadInput);  // kValid's wall sticks out of the domain
+  const std::string bin = RYUSHI_BINARY, out = (dir / "out").string();
+  auto run = [&](const std::string& extra) { return test::run_command(bin + " run " + scene + " --out " + out + " --quiet" + extra); };
+  test::write_text(scene, kValid);  // its wall's layers stick out of the domain (min 0)
+  auto r = run("");
+  CHECK(r.code == kExitBadInput);
+  CHECK(r.output.find("_scene.toml:14:7: [[wall]] #0 with its 3 layers lies outside the domain") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir / "out"));
-  opt.sets = {"particles.spacing=abc"};
-  CHECK(run_scene(opt) == kExitBadInput);
+  r = run(" --set particles.spacing=abc");
+  CHECK(r.code == kExitBadInput);
+  CHECK(r.output.find("--set particles.spacing=abc") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir / "out"));
   test::write_text(scene, valid_with_domain_min());
-  opt.sets = {"output.fields=[\"temperature\"]"};
-  CHECK(run_scene(opt) == kExitBadInput);  // a field no system provides
+  r = run(" --set 'output.fields=[\"temperature\"]'");
+  CHECK(r.code == kExitBadInput);  // a field no system provides
+  CHECK(r.output.find("no per-particle field 'temperature'") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir / "out"));
 }
