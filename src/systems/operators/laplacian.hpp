@@ -28,6 +28,22 @@ namespace ryushi {
 // so that the value functions below, the pressure-equation assembly and the viscous terms use
 // one implementation. The *_weights functions fill `w` (resized to the neighbour count).
 
+// Y_p = L_i sum_k V_k gW_k r_k,a r_k,b over the symmetric pairs p = (a, b): the corrected
+// gradient's response to the quadratic monomials, shared by the corrected and SPH(2) weights.
+template <int D>
+std::array<Vec<D>, kSymmetricCount<D>> corrected_quadratic_moments(const ParticleView<D>& v, std::size_t i,
+                                                                   const Mat<D>& L) {
+  constexpr auto pairs = symmetric_pairs<D>();
+  std::array<Vec<D>, kSymmetricCount<D>> Y;
+  Y.fill(Vec<D>::Zero());
+  for (auto j : v.neighbours.of(i)) {
+    Vec<D> r = v.r(i, j), gw = v.volume[j] * v.grad_w(r);
+    for (int p = 0; p < kSymmetricCount<D>; ++p) Y[p] += gw * r[pairs[p].first] * r[pairs[p].second];
+  }
+  for (auto& y : Y) y = L * y;
+  return Y;
+}
+
 template <int D>
 void laplacian_weights_standard(const ParticleView<D>& v, std::size_t i, std::vector<double>& w) {
   const double eta2 = 0.01 * v.kernel.h() * v.kernel.h();
@@ -56,14 +72,7 @@ bool laplacian_weights_corrected(const ParticleView<D>& v, std::size_t i, std::v
     return false;
   }
   auto nb = v.neighbours.of(i);
-  // Y_cd = L_i sum_k V_k gW_k r_k,c r_k,d.
-  std::array<Vec<D>, K> Y;
-  Y.fill(Vec<D>::Zero());
-  for (auto j : nb) {
-    Vec<D> r = v.r(i, j), gw = v.volume[j] * v.grad_w(r);
-    for (int p = 0; p < K; ++p) Y[p] += gw * r[pairs[p].first] * r[pairs[p].second];
-  }
-  for (auto& y : Y) y = L * y;
+  const auto Y = corrected_quadratic_moments(v, i, L);
   // K beta = delta, beta = B's independent entries; u_j holds e (x) gW with off-diagonals doubled.
   Eigen::Matrix<double, K, K> Kmat = Eigen::Matrix<double, K, K>::Zero();
   Eigen::Matrix<double, K, 1> delta = Eigen::Matrix<double, K, 1>::Zero();

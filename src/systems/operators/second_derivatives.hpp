@@ -92,12 +92,7 @@ bool laplacian_weights_sph2(const ParticleView<D>& v, std::size_t i, std::vector
     return false;
   }
   auto nb = v.neighbours.of(i);
-  std::array<Vec<D>, K> Q;
-  Q.fill(Vec<D>::Zero());
-  for (auto j : nb) {
-    Vec<D> r = v.r(i, j), gw = v.volume[j] * (L * v.grad_w(r));
-    for (int p = 0; p < K; ++p) Q[p] += gw * r[pairs[p].first] * r[pairs[p].second];
-  }
+  const auto Q = corrected_quadratic_moments(v, i, L);
   Eigen::Matrix<double, K, K> M = Eigen::Matrix<double, K, K>::Zero();
   for (auto j : nb) {
     Vec<D> r = v.r(i, j), gw = L * v.grad_w(r);
