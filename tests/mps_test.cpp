@@ -81,7 +81,10 @@ TEST_CASE("mps: hydrostatic tank, mean pressure follows rho g depth") {
   CHECK(std::abs(eta - H) < 0.5 * l0);
   for (std::size_t k = 0; k < y.size(); ++k) CHECK(std::abs(p[k] - slope * (eta - y[k])) < 0.01 * rho_g * H);
   auto summary = test::read_text(out / "summary.json");
-  CHECK(test::json_number(summary, "fluid_mass_relative_change") == 0.0);
+  // Mass is exact by construction; incompressibility shows in the interior number density:
+  // measured mean n*/n0 0.99993 (H/l0 = 20). 0.2% is about ten times the largest deviation of
+  // the 2D runs (2.5e-4 and 3.1e-4 in the dam breaks).
+  CHECK(std::abs(test::json_number(summary, "interior_number_density_ratio") - 1) < 0.002);
   CHECK(test::json_number(summary, "max_relative_residual") <= 1e-8);
 }
 
@@ -123,7 +126,8 @@ TEST_CASE("mps: dam break runs past the far-wall impact and conserves mass") {
   opt.sets.push_back("output.probe_interval=0.002");
   REQUIRE(run_scene(opt) == kExitDone);
   auto summary = test::read_text(out / "summary.json");
-  CHECK(test::json_number(summary, "fluid_mass_relative_change") == 0.0);
+  // Measured mean interior n*/n0 0.99969 after the impact (a/l0 = 20, T = 4.5); bound as in the tank.
+  CHECK(std::abs(test::json_number(summary, "interior_number_density_ratio") - 1) < 0.002);
   auto probes = test::read_csv(out / "probes.csv");
   auto& front = probes["surge_front"];
   CHECK(front.front() / a == doctest::Approx(1.0));
@@ -265,7 +269,8 @@ TEST_CASE("mps: 3D dam break runs past the far-wall impact") {
   REQUIRE(run_scene(opt) == kExitDone);
   auto summary = test::read_text(out / "summary.json");
   CHECK(test::json_number(summary, "simulated_time") == doctest::Approx(0.6));
-  CHECK(test::json_number(summary, "fluid_mass_relative_change") == 0.0);
+  // The coarse 3D run (a/l0 = 10, r_e = 2.1 l0) through the impact: measured 1.0061; bound 2%.
+  CHECK(std::abs(test::json_number(summary, "interior_number_density_ratio") - 1) < 0.02);
   CHECK(test::json_number(summary, "max_relative_residual") <= 1e-8);
   auto probes = test::read_csv(out / "probes.csv");
   CHECK(probes["surge_front"].back() > 0.95);         // the far wall is at 1 m

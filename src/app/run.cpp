@@ -140,6 +140,7 @@ class Runner {
     auto method = build_method<D>(scene_, world_, po);
     context_ = method.context;
     method_parameters_ = method.parameters;
+    method_diagnostics_ = method.diagnostics;
     method_summary_ = method.summary;
     density_may_vanish_ = method.density_may_vanish;
     res_.ensure(domain_resource<D>) = context_.domain;
@@ -350,6 +351,8 @@ class Runner {
     w.key("kinetic_energy").value(now.kinetic_energy);
     w.key("max_speed").value(now.max_speed);
     w.key("max_density_deviation").value(now.max_density_deviation);
+    if (method_diagnostics_)
+      for (auto& [name, value] : method_diagnostics_(world_)) w.key(name).value(value);
     w.end_object();
     if (res_.has(solve_statistics_resource.name)) {
       const auto& st = res_.get(solve_statistics_resource);
@@ -382,6 +385,7 @@ class Runner {
   Profiler profiler_;
   MethodContext<D> context_;
   std::vector<std::pair<std::string, double>> method_parameters_;
+  std::function<std::vector<std::pair<std::string, double>>(const World<D>&)> method_diagnostics_;
   World<D> world_;
   Resources res_;
   std::unique_ptr<Scheduler<D>> scheduler_;

@@ -33,6 +33,9 @@ struct MethodSetup {
   std::string summary;  // one phrase for the start-up log line, e.g. "c0 = 19.8 m/s"
   // Figures of the method written under "parameters" in summary.json, e.g. {"sound_speed", c0}.
   std::vector<std::pair<std::string, double>> parameters;
+  // The method's own conservation figures, written under "diagnostics" in summary.json with
+  // every frame (e.g. MPS: the interior number density against n0). Empty: none.
+  std::function<std::vector<std::pair<std::string, double>>(const World<D>&)> diagnostics;
   // MPS density is rho0 n*/n0, a diagnostic: an isolated splash particle has n* = 0. WCSPH
   // divides by density, so there zero is a failure.
   bool density_may_vanish = false;

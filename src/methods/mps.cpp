@@ -97,6 +97,21 @@ MethodSetup<D> build_mps(const Scene& s, World<D>& world, const PipelineOptions&
   m.parameters = {{"smoothing_length", p.weight.h()}, {"influence_radius", p.weight.support()}};
   if (!options.dump_matrix_dir.empty())
     m.pipeline.push_back(std::make_shared<PressureSystemDump<D>>(options.dump_matrix_dir, options.dump_step));
+  // Mass is a constant column (exact by construction); what incompressibility keeps is the
+  // number density of the particles below the surface: its mean over them against n0.
+  const double n0 = p.n0;
+  m.diagnostics = [n0](const World<D>& w) -> std::vector<std::pair<std::string, double>> {
+    if (!w.has(components::number_density.name) || !w.has(components::pressure_role.name)) return {};
+    auto& n = w.column(components::number_density);
+    auto& role = w.column(components::pressure_role);
+    auto& kind = w.column(components::kind);
+    double sum = 0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < w.size(); ++i)
+      if (kind[i] == kFluid && role[i] == kPressureUnknown) sum += n[i] / n0, ++count;
+    return {{"interior_number_density_ratio", count ? sum / count : 1.0},
+            {"interior_particles", static_cast<double>(count)}};
+  };
   return m;
 }
 
