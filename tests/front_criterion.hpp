@@ -4,6 +4,8 @@
 // fitted time-origin shift dT in [0, 0.30] (the experiment's gate needs time to open; published
 // SPH, MPS, BEM and level-set fronts lead it the same way), within 3% for T <= 2.5; and
 // convergence: the fronts at a/d = 20 and 40 agree within 3% over T <= 2.5.
+#include <doctest/doctest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -69,6 +71,17 @@ inline FrontFit fit_time_origin(const Front& f, double T_max = 2.5) {
   for (auto& p : data)
     if (p.T <= T_max) fit.unshifted += std::to_string(100 * (interpolate(f.T, f.Z, p.T) / p.Z - 1)) + "% ";
   return fit;
+}
+
+// The 3% after one fitted shift, at a/d = 20 (coarse) and 40 (fine), with the unshifted errors
+// and the fit printed beside it.
+inline void check_time_origin_criterion(const Front& coarse, const Front& fine) {
+  for (auto* f : {&coarse, &fine}) {
+    auto fit = fit_time_origin(*f);
+    MESSAGE((f == &coarse ? "a/d = 20" : "a/d = 40"), ": unshifted front errors ", fit.unshifted,
+            "| time-origin shift ", fit.shift, " -> max error ", 100 * fit.error, "%");
+    CHECK(fit.error <= 0.03);
+  }
 }
 
 // Largest relative difference of two fronts over T in [0, T_max] (sampled every 0.05).

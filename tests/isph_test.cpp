@@ -121,7 +121,11 @@ TEST_CASE("isph: bad method and shifting keys exit 2 with the place") {
     CHECK_MESSAGE(r.output.find(expected) != std::string::npos, r.output);
   };
   check("description = \"langrangian\"\n", "bad.toml:15:15: 'description' in [method] is 'langrangian'");
-  check("[shifting]\nmodel = \"fickian\"\n", "'model' in [shifting] is 'fickian'");
+  check("[shifting]\nmodel = \"fick\"\n", "'model' in [shifting] is 'fick'");
+  check("wall_rows = \"shepherd\"\n", "bad.toml:15:13: 'wall_rows' in [method] is 'shepherd'");
+  check("compression_relaxation = -0.1\n", "'compression_relaxation' in [method] is -0.1");
+  check("[shifting]\nfickian_coefficient = -2.0\n", "'fickian_coefficient' in [shifting] is -2");
+  check("[shifting]\nmax_shift = 1.5\n", "'max_shift' in [shifting] is 1.5");
   check("[shifting]\ncoefficient = -1.0\n", "'coefficient' in [shifting] is -1");
   check("[[wall]]\nmin = [0.2, 0.2]\nmax = [0.8, 0.8]\nlayers = 3\n", "method isph uses one layer of wall particles");
 }

@@ -261,6 +261,7 @@ class Runner {
     res_.get(resources::time) = time_;
     ++step_;
     Profiler::Scope t(profiler_, slot_health_);
+    if (scene_.outflow_removes) remove_escaped_fluid();
     HealthCheck<D> h;
     h.density_may_vanish = density_may_vanish_;
     h.run(world_, context_.domain);
@@ -273,6 +274,27 @@ class Runner {
       m << ") after system '" << scheduler_->last_writer(h.column) << "'";
       throw NumericalFailure(m.str());
     }
+  }
+
+  // [domain] outflow = "remove": fluid particles that left the box (finite positions: a
+  // non-finite one is still a failure) are erased between steps and counted; the first is logged.
+  void remove_escaped_fluid() {
+    auto& x = world_.column(components::position);
+    auto& kind = world_.column(components::kind);
+    auto& m = world_.column(components::mass);
+    std::vector<std::uint32_t> gone;
+    for (std::size_t i = 0; i < world_.size(); ++i)
+      if (kind[i] == kFluid && x[i].allFinite() && !context_.domain.contains(x[i])) gone.push_back(std::uint32_t(i));
+    if (gone.empty()) return;
+    if (removed_ == 0)
+      spdlog::warn("t = {:.6g} s: fluid particle id {} left the domain and is removed ([domain] outflow = \"remove\"); "
+                   "the count is in summary.json",
+                   time_, world_.column(components::id)[gone.front()]);
+    for (auto i : gone) removed_mass_ += m[i];
+    removed_ += gone.size();
+    CommandBuffer<D> cb;
+    cb.erase(std::move(gone));
+    cb.apply(world_);
   }
 
   void sample_probes_now() {
@@ -348,6 +370,10 @@ class Runner {
     w.key("fluid_mass_relative_change").value(initial_.fluid_mass > 0 ? (now.fluid_mass - initial_.fluid_mass) / initial_.fluid_mass : 0.0);
     w.key("fluid_volume").value(now.fluid_volume);
     w.key("fluid_volume_relative_change").value(initial_.fluid_volume > 0 ? (now.fluid_volume - initial_.fluid_volume) / initial_.fluid_volume : 0.0);
+    if (scene_.outflow_removes) {
+      w.key("removed_particles").value(static_cast<std::int64_t>(removed_));
+      w.key("removed_mass").value(removed_mass_);
+    }
     w.key("kinetic_energy").value(now.kinetic_energy);
     w.key("max_speed").value(now.max_speed);
     w.key("max_density_deviation").value(now.max_density_deviation);
@@ -397,6 +423,8 @@ class Runner {
   Diagnostics initial_;
   double time_ = 0, dt_used_ = 0, next_output_ = 0, next_probe_ = 0;
   long long step_ = 0;
+  std::size_t removed_ = 0;  // fluid particles erased by outflow = "remove"
+  double removed_mass_ = 0;
   std::size_t slot_output_ = 0, slot_probes_ = 0, slot_reorder_ = 0, slot_health_ = 0;
   std::chrono::steady_clock::time_point wall_start_;
 };

@@ -22,11 +22,13 @@
 #include "systems/isph/isph_pressure_correction.hpp"
 #include "systems/isph/isph_pressure_equation.hpp"
 #include "systems/isph/isph_time_step.hpp"
+#include "systems/isph/isph_wall_guard.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
 #include "systems/pressure/linear_solve.hpp"
 #include "systems/pressure/preconditioner_setup.hpp"
 #include "systems/pressure/pressure_system_dump.hpp"
 #include "systems/shifting/density_shifting.hpp"
+#include "systems/shifting/fickian_shifting.hpp"
 
 namespace ryushi {
 
@@ -48,8 +50,10 @@ IsphParameters<D> isph_parameters(const Scene& s) {
   p.viscous_laplacian = laplacian_order(s.viscous_laplacian);
   p.symmetric_gradient = s.pressure_gradient == "symmetric";
   p.uncorrected_divergence_det = s.uncorrected_divergence_det;
+  p.compression_relaxation = s.compression_relaxation;
   p.extrapolated_surface = s.free_surface_pressure == "extrapolated";
   p.wall_no_slip = !s.wall_slip;
+  p.wall_shepard = s.isph_wall_rows == "shepard";
   p.cfl = s.cfl;
   double u = std::sqrt(2.0 * s.gravity_magnitude() * s.fluid_height());
   p.reference_speed = u > 0 ? u : 1e-9;
@@ -95,7 +99,12 @@ std::vector<SystemPtr<D>> isph_pipeline(const Scene& s, const IsphParameters<D>&
     ShiftingParameters<D> sp{p.kernel, p.domain, p.spacing, p.rho0, s.shifting_coefficient};
     list.push_back(std::make_shared<ShiftingDensity<D>>(sp));
     list.push_back(std::make_shared<DensityShifting<D>>(sp));
+  } else if (p.description == IsphDescription::Ale && s.shifting_model == "fickian") {
+    list.push_back(std::make_shared<FickianShifting<D>>(FickianShiftingParameters<D>{
+        p.kernel, p.domain, p.spacing, s.fickian_coefficient, s.anti_clumping, s.max_shift, true}));
   }
+  if (p.description != IsphDescription::Eulerian)
+    list.push_back(std::make_shared<IsphWallGuard<D>>(p.domain, 0.5 * p.spacing));
   if (s.fixed_dt <= 0) list.push_back(std::make_shared<IsphTimeStep<D>>(p));
   return list;
 }
@@ -106,10 +115,11 @@ MethodSetup<D> build_isph(const Scene& s, World<D>& world, const PipelineOptions
   populate_isph_world<D>(s, p, world);
   MethodSetup<D> m;
   m.context = method_context<D>(s, p.kernel);
-  m.pipeline = isph_pipeline<D>(s, p);
   double vmax = 0;  // a scene may start moving (the rotating square)
   for (auto& u : world.column(components::velocity)) vmax = std::max(vmax, u.norm());
   m.first_dt = IsphTimeStep<D>(p).limit(vmax);
+  p.relaxation_time = p.cfl * p.spacing / std::max(vmax, p.reference_speed);
+  m.pipeline = isph_pipeline<D>(s, p);
   char b[96];
   std::snprintf(b, sizeof b, "h = %.4g m, %s, bicgstab + ", p.kernel.h(), s.isph_description.c_str());
   m.summary = b + s.solver.preconditioner;

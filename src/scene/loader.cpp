@@ -297,6 +297,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.description = get("scene", "description").value_or(std::string());
   sc.domain_min = vec_of(get("domain", "min"));
   sc.domain_max = vec_of(get("domain", "max"));
+  sc.outflow_removes = *get("domain", "outflow").value<std::string>() == "remove";
   sc.periodic.assign(D, false);
   if (auto* p = root["domain"]["periodic"].as_array())
     for (int a = 0; a < D; ++a) sc.periodic[a] = *(*p)[a].value<bool>();
@@ -332,8 +333,13 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.pressure_gradient = *get("method", "pressure_gradient").value<std::string>();
   sc.uncorrected_divergence_det = *get("method", "uncorrected_divergence_det").value<double>();
   sc.free_surface_pressure = *get("method", "free_surface_pressure").value<std::string>();
+  sc.isph_wall_rows = *get("method", "wall_rows").value<std::string>();
+  sc.compression_relaxation = *get("method", "compression_relaxation").value<double>();
   sc.shifting_model = *get("shifting", "model").value<std::string>();
   sc.shifting_coefficient = *get("shifting", "coefficient").value<double>();
+  sc.fickian_coefficient = *get("shifting", "fickian_coefficient").value<double>();
+  sc.anti_clumping = *get("shifting", "anti_clumping").value<double>();
+  sc.max_shift = *get("shifting", "max_shift").value<double>();
   sc.clamp_negative_pressure = *get("method", "clamp_negative_pressure").value<bool>();
   sc.collision_distance = *get("method", "collision_distance").value<double>();
   sc.collision_restitution = *get("method", "collision_restitution").value<double>();

@@ -49,6 +49,7 @@ struct Scene {
   int dimension = 2;
   std::vector<double> domain_min, domain_max;
   std::vector<bool> periodic;
+  bool outflow_removes = false;  // [domain] outflow = "remove"
   double spacing = 0, smoothing_ratio = 1.5;
   std::string kernel = "wendland_c2";
   int reorder_interval = 25;
@@ -70,6 +71,9 @@ struct Scene {
   // [shifting]
   std::string shifting_model = "density";
   double shifting_coefficient = 0.005;
+  std::string isph_wall_rows = "corrected";
+  double compression_relaxation = 0.0;
+  double fickian_coefficient = 2.0, anti_clumping = 0.2, max_shift = 0.2;
   SolverSpec solver;
   double end_time = 0, cfl = 0.2, fixed_dt = 0, dt_min = 1e-9;
   long long max_steps = 0;

@@ -51,12 +51,13 @@ std::vector<SectionSpec> build() {
                 {"description", K::String, "", "\"\"", "Free text."}}});
   s.push_back({"domain", false, true,
                "The box that must contain every particle for the whole run (walls included). A "
-               "particle leaving it is a numerical failure (exit code 3).",
+               "particle leaving it is a numerical failure (exit code 3), unless outflow = \"remove\".",
                {{"min", K::Vector, "m", "", "Lower corner, one value per axis.", true},
                 {"max", K::Vector, "m", "", "Upper corner, one value per axis.", true},
                 {"periodic", K::BoolVector, "", "(false on every axis)",
                  "Per axis: wrap particles and neighbour search across the box. A periodic axis "
-                 "must be at least three support radii long."}}});
+                 "must be at least three support radii long."},
+                choice("outflow", "\"fail\"", "A fluid particle that leaves the box: fail (a numerical failure, exit code 3) or remove (erased between steps, counted as removed_particles and removed_mass in summary.json, the first one logged): spray over an open tank's walls, an open channel's end.", {"fail", "remove"})}});
   s.push_back({"particles", false, true, "Particle lattice and kernel.",
                {positive("spacing", "m", "", "Initial particle spacing d (lattice step).", true),
                 ranged({"smoothing_ratio", K::Float, "", "(1.5; method mps: 3.1 in 2D, 2.1 in 3D)", "Smoothing length h = smoothing_ratio * spacing; support radius 2h. 1.5 with Wendland C2 keeps the lattice first moment within 0.3% of the identity (1.3 gives 2.6%, which shows up as a 2.6% pressure error at rest). With the mps kernel h is the influence radius r_e (the BMG paper's 3.1 l0 / 2.1 l0)."}, 0.5, 4.0),
@@ -94,10 +95,15 @@ std::vector<SectionSpec> build() {
                 choice("viscous_laplacian", "\"corrected\"", "isph: Laplacian of the viscous term (eq. 15): standard, corrected or sph2.", {"standard", "corrected", "sph2"}),
                 choice("pressure_gradient", "\"corrected\"", "isph: pressure gradient of the corrector: corrected (difference form with L_i, eq. 9) or symmetric (sum (p_i + p_j) V_j gW_ij, I-SPH(2) eq. 11).", {"corrected", "symmetric"}),
                 choice("free_surface_pressure", "\"extrapolated\"", "isph: where p = 0 on the free surface: extrapolated (half a spacing outside each surface particle along its normal: p_i + d/2 N . grad p = 0) or particle (p_i = 0 at the surface particles, the ISPH paper's eq. 18, which puts the surface d/2 too deep).", {"extrapolated", "particle"}),
+                choice("wall_rows", "\"corrected\"", "isph: how a wall particle's Neumann row (eq. 17, n . grad p = rho0/dt (v* - v_wall) . n) takes the gradient: corrected (the corrected gradient at the wall particle, the paper's) or shepard (one-sided differences to the fluid neighbours averaged with W: positive weights, no coupling between wall particles).", {"corrected", "shepard"}),
+                ranged({"compression_relaxation", K::Float, "", "0.0", "isph: alpha of the stabilised source (Asai et al. 2012): interior rows add alpha rho0 (<rho>_i/rho0 - 1)/dt^2 where the density of eq. 19 exceeds rho0 (compression only), which keeps particles from pairing up in violent flows; 0 turns it off (the paper's divergence-free source)."}, 0.0, 1.0),
                 ranged({"uncorrected_divergence_det", K::Float, "", "0.8", "isph: where det(M_i) (M_i = L_i^-1) is below this, the divergence of the pressure source is not corrected (I-SPH(2) section 3(2))."}, 0.0, 1.0)}});
   s.push_back({"shifting", false, false, "Particle shifting (isph with description = \"ale\"). docs/isph.md.",
-               {choice("model", "\"density\"", "none, or density: density-based shifting (ISPH paper eqs. 19-25).", {"none", "density"}),
-                ranged({"coefficient", K::Float, "", "0.005", "C_shift of eq. 20: dr = C_shift h (dr_w + dr_dens)."}, 0.0, 1.0)}});
+               {choice("model", "\"density\"", "none; density: density-based shifting (ISPH paper eqs. 19-25); fickian: dr = -A h |v| dt grad C (Lind et al. 2012, Skillen et al. 2013).", {"none", "density", "fickian"}),
+                ranged({"coefficient", K::Float, "", "0.005", "density model: C_shift of eq. 20, dr = C_shift h (dr_w + dr_dens)."}, 0.0, 1.0),
+                ranged({"fickian_coefficient", K::Float, "", "2.0", "fickian model: A of dr = -A h |v| dt grad C (Skillen et al. 2013 recommend 1-6)."}, 0.0, 100.0),
+                ranged({"anti_clumping", K::Float, "", "0.2", "fickian model: R of the anti-clumping term, grad C = sum V_j (1 + R (W_ij/W(d))^4) grad W_ij (Lind et al. 2012)."}, 0.0, 10.0),
+                ranged({"max_shift", K::Float, "", "0.2", "fickian model: largest shift per step, in particle spacings."}, 0.0, 1.0)}});
   s.push_back({"time", false, true, "Time control.",
                {positive("end", "s", "", "Simulated end time.", true),
                 ranged({"cfl", K::Float, "", "0.2", "CFL number for the adaptive step dt = cfl h / (c0 + |v|max), also bounded by force and viscous limits."}, 1e-6, 1.0),

@@ -39,8 +39,15 @@ struct IsphParameters {
   LaplacianOrder ppe_laplacian = LaplacianOrder::Corrected, viscous_laplacian = LaplacianOrder::Corrected;
   bool symmetric_gradient = false;
   double uncorrected_divergence_det = 0.8;
+  // alpha of the stabilised source (Asai et al. 2012) where the particles are compressed.
+  double compression_relaxation = 0.0;
+  double relaxation_time = 0.0;  // cfl d / max(sqrt(2 g H), initial speed): the step of the flow at rest
   bool extrapolated_surface = true;  // p = 0 half a spacing outside a surface particle
   bool wall_no_slip = true;
+  // Neumann wall rows (eq. 17) with the corrected gradient at the wall particle (the paper's), or
+  // with the Shepard one-sided difference to the fluid neighbours (positive weights, no wall-wall
+  // coupling): see IsphPressureEquation.
+  bool wall_shepard = false;
   double cfl = 0.2;
   double reference_speed = 1;  // sqrt(2 g H): bounds the first steps before anything moves
 

@@ -28,6 +28,7 @@
 #include "systems/free_surface/free_surface_detection.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/operators/gradient.hpp"
+#include "systems/shifting/shift_velocity.hpp"
 
 namespace ryushi {
 
@@ -138,17 +139,9 @@ class DensityShifting final : public System<D> {
       Vec<D> dr = scale * (spread + dens);
       if (surface[i]) dr -= dr.dot(normal[i]) * normal[i];  // the surface slides along itself
       shift[i] = dr;
-      gradient_weights_corrected(view, i, g);
-      auto nb = nl.of(i);
-      Vec<D> change = Vec<D>::Zero();
-      for (std::size_t k = 0; k < nb.size(); ++k) change += dr.dot(g[k]) * (v[nb[k]] - v[i]);
-      dv_[i] = change;
+      dv_[i] = shifted_velocity_change(view, std::span<const Vec<D>>(v.data(), v.size()), i, dr, g);
     });
-    for_each_of_kind(kind, kFluid, [&](std::size_t i) {
-      x[i] += shift[i];
-      p_.domain.wrap(x[i]);
-      v[i] += dv_[i];
-    });
+    apply_shifts<D>(kind, p_.domain, shift, dv_, x, v);
   }
 
  private:

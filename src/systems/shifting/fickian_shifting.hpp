@@ -1,0 +1,105 @@
+#pragma once
+// Fickian particle shifting (Lind, Xu, Stansby & Rogers 2012, J. Comput. Phys. 231; the
+// velocity-scaled diffusion coefficient of Skillen, Lind, Stansby & Rogers 2013): particles
+// diffuse down the gradient of their concentration C_i = sum_j V_j W_ij,
+//   dr_i = -A h |v_i| dt grad C_i,
+//   grad C_i = sum_j V_j (1 + R (W_ij / W(d))^4) gW_ij          (Lind 2012 eq. 17: the R term
+//                                                                pushes clumped pairs apart),
+// walls included (they repel the fluid that comes near them). The shift scales with the
+// distance the particle travels in the step, so it keeps up with the deformation of a fast
+// flow: the density-based model's C_shift h per step does not (docs/isph.md: the dam break's
+// collapsing column turns into columns of particles 0.4 d apart vertically and 2.5 d apart
+// horizontally at C_shift = 0.005). On the free surface only the tangential part is kept (a
+// particle there has no neighbours outside, and grad C would push it out); the shift is capped at
+// `max_shift` d. Same interface as the density model: the velocity is carried to the new place.
+#include <cmath>
+#include <vector>
+
+#include "ecs/system.hpp"
+#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/free_surface/free_surface_detection.hpp"
+#include "systems/neighbour/neighbour_list.hpp"
+#include "systems/isph/isph_parameters.hpp"             // components::wall_normal
+#include "systems/shifting/density_shifting.hpp"  // components::shift
+#include "systems/shifting/shift_velocity.hpp"
+
+namespace ryushi {
+
+template <int D>
+struct FickianShiftingParameters {
+  Kernel<D> kernel{KernelType::CubicSpline, 1.0};
+  Domain<D> domain;
+  double spacing = 1;
+  double coefficient = 2.0;  // A (Skillen et al. 2013 recommend 1-6)
+  double clumping = 0.2;     // R of the anti-clumping term, exponent 4 (Lind 2012)
+  double max_shift = 0.2;    // cap, in spacings
+  bool complete_walls = false;  // one wall layer with normals (ISPH): see the loop below
+};
+
+template <int D>
+class FickianShifting final : public System<D> {
+ public:
+  explicit FickianShifting(const FickianShiftingParameters<D>& p) : p_(p), w_spacing_(p.kernel.w(p.spacing)) {}
+  std::string name() const override { return "particle_shifting"; }
+  Access access() const override {
+    auto a = Access{}
+                 .read(components::mass, components::density, components::kind, components::free_surface,
+                       components::surface_normal, neighbours_resource, resources::dt)
+                 .write(components::position, components::velocity, components::shift);
+    if (p_.complete_walls) a.read(components::wall_normal);
+    return a;
+  }
+  void run(SystemContext<D>& ctx) override {
+    const double dt = ctx.read(resources::dt);
+    const auto& nl = ctx.read(neighbours_resource);
+    auto m = ctx.read(components::mass);
+    auto density = ctx.read(components::density);
+    auto kind = ctx.read(components::kind);
+    auto surface = ctx.read(components::free_surface);
+    auto normal = ctx.read(components::surface_normal);
+    const bool complete_walls = p_.complete_walls;
+    auto wall_normal = complete_walls ? ctx.read(components::wall_normal) : std::span<const Vec<D>>{};
+    auto x = ctx.write(components::position);
+    auto v = ctx.write(components::velocity);
+    auto shift = ctx.write(components::shift);
+    particle_volumes(m, density, volume_);
+    dv_.resize(m.size());
+    ParticleView<D> view{std::span<const Vec<D>>(x.data(), x.size()), volume_, nl, p_.kernel, p_.domain};
+    const double h = p_.kernel.h(), cap = p_.max_shift * p_.spacing;
+    // Gather every shift and velocity change from the unshifted state first, then apply.
+    for_each_of_kind(kind, kFluid, [&](std::size_t i) {
+      thread_local std::vector<Vec<D>> g;
+      Vec<D> grad_c = Vec<D>::Zero();
+      auto add = [&](const Vec<D>& r, double volume) {
+        double len = r.norm();
+        if (len >= p_.kernel.support() || len == 0) return;
+        double ratio = p_.kernel.w(len) / w_spacing_;
+        grad_c += volume * (1 + p_.clumping * ratio * ratio * ratio * ratio) * view.grad_w(r);
+      };
+      for (auto j : nl.of(i)) {
+        Vec<D> r = view.r(i, j);
+        add(r, volume_[j]);
+        // One wall layer leaves the support short behind the wall: C falls towards it and -grad C
+        // would push the fluid into the wall. The layers it lacks are completed on the fly, as
+        // copies of the wall particle one and two spacings further out along its normal.
+        if (complete_walls && kind[j] == kWall)
+          for (int layer = 1; layer <= 2; ++layer) add(r + layer * p_.spacing * wall_normal[j], volume_[j]);
+      }
+      Vec<D> dr = -p_.coefficient * h * v[i].norm() * dt * grad_c;
+      if (surface[i]) dr -= dr.dot(normal[i]) * normal[i];
+      double len = dr.norm();
+      if (len > cap) dr *= cap / len;
+      shift[i] = dr;
+      dv_[i] = shifted_velocity_change(view, std::span<const Vec<D>>(v.data(), v.size()), i, dr, g);
+    });
+    apply_shifts<D>(kind, p_.domain, shift, dv_, x, v);
+  }
+
+ private:
+  FickianShiftingParameters<D> p_;
+  double w_spacing_;
+  std::vector<double> volume_;
+  std::vector<Vec<D>> dv_;
+};
+
+}  // namespace ryushi
