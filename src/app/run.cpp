@@ -378,7 +378,7 @@ class Runner {
     w.key("max_speed").value(now.max_speed);
     w.key("max_density_deviation").value(now.max_density_deviation);
     if (method_diagnostics_)
-      for (auto& [name, value] : method_diagnostics_(world_)) w.key(name).value(value);
+      for (auto& [name, value] : method_diagnostics_(world_, res_)) w.key(name).value(value);
     w.end_object();
     if (res_.has(solve_statistics_resource.name)) {
       const auto& st = res_.get(solve_statistics_resource);
@@ -411,7 +411,7 @@ class Runner {
   Profiler profiler_;
   MethodContext<D> context_;
   std::vector<std::pair<std::string, double>> method_parameters_;
-  std::function<std::vector<std::pair<std::string, double>>(const World<D>&)> method_diagnostics_;
+  std::function<std::vector<std::pair<std::string, double>>(const World<D>&, const Resources&)> method_diagnostics_;
   World<D> world_;
   Resources res_;
   std::unique_ptr<Scheduler<D>> scheduler_;

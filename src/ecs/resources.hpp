@@ -35,6 +35,10 @@ class Resources {
       throw std::logic_error("resource '" + std::string(r.name) + "' was never created");
     return cast<T>(it->second, r.name);
   }
+  template <class T>
+  const T& get(Resource<T> r) const {
+    return const_cast<Resources&>(*this).get(r);  // the same lookup; nothing is created
+  }
   bool has(std::string_view name) const { return slots_.count(std::string(name)) != 0; }
 
  private:

@@ -126,6 +126,10 @@ MethodSetup<D> build_isph(const Scene& s, World<D>& world, const PipelineOptions
   m.parameters = {{"smoothing_length", p.kernel.h()}, {"search_radius", p.search_radius()}};
   if (!options.dump_matrix_dir.empty())
     m.pipeline.push_back(std::make_shared<PressureSystemDump<D>>(options.dump_matrix_dir, options.dump_step));
+  m.diagnostics = [](const World<D>&, const Resources& res) -> std::vector<std::pair<std::string, double>> {
+    if (!res.has(resources::wall_guard_events.name)) return {};
+    return {{"wall_guard_events", double(res.get(resources::wall_guard_events))}};
+  };
   return m;
 }
 

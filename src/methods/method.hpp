@@ -35,7 +35,7 @@ struct MethodSetup {
   std::vector<std::pair<std::string, double>> parameters;
   // The method's own conservation figures, written under "diagnostics" in summary.json with
   // every frame (e.g. MPS: the interior number density against n0). Empty: none.
-  std::function<std::vector<std::pair<std::string, double>>(const World<D>&)> diagnostics;
+  std::function<std::vector<std::pair<std::string, double>>(const World<D>&, const Resources&)> diagnostics;
   // MPS density is rho0 n*/n0, a diagnostic: an isolated splash particle has n* = 0. WCSPH
   // divides by density, so there zero is a failure.
   bool density_may_vanish = false;

@@ -100,7 +100,7 @@ MethodSetup<D> build_mps(const Scene& s, World<D>& world, const PipelineOptions&
   // Mass is a constant column (exact by construction); what incompressibility keeps is the
   // number density of the particles below the surface: its mean over them against n0.
   const double n0 = p.n0;
-  m.diagnostics = [n0](const World<D>& w) -> std::vector<std::pair<std::string, double>> {
+  m.diagnostics = [n0](const World<D>& w, const Resources&) -> std::vector<std::pair<std::string, double>> {
     if (!w.has(components::number_density.name) || !w.has(components::pressure_role.name)) return {};
     auto& n = w.column(components::number_density);
     auto& role = w.column(components::pressure_role);
