@@ -30,9 +30,9 @@ RunOptions dam_break(const std::filesystem::path& out, double end_time, std::vec
 }
 }  // namespace
 
-// Measured: a/d = 20 shift 0.213, 1.41% after it (unshifted up to 13.7%); a/d = 40 shift 0.244,
-// 0.66% (15.7%). Through t = 2 s at a/d = 20 one particle of 800 is thrown over the 2.5 m walls
-// by the run-up jet and removed (outflow = "remove"); the largest speed at the end is 3.4 m/s.
+// Measured: a/d = 20 shift 0.215, 1.75% after it (unshifted up to 15.0%); a/d = 40 shift 0.248,
+// 1.09% (16.1%). Through t = 2 s at a/d = 20 no particle leaves over the 2.5 m walls (the scene
+// removes any that do, outflow = "remove"); the largest speed at the end is 3.0 m/s.
 TEST_CASE("isph: dam break front meets the criterion at a/d = 20 and 40 and runs through the impact to t = 2 s") {
   auto out = test::scratch("isph_dam_break_20");
   REQUIRE(run_scene(dam_break(out, 2.0, {"particles.spacing=0.0125"})) == kExitDone);
@@ -58,12 +58,10 @@ TEST_CASE("isph: dam break front meets the criterion at a/d = 20 and 40 and runs
   REQUIRE(run_scene(dam_break(fine_out, 2.6 * t_scale, {"particles.spacing=0.00625"})) == kExitDone);
   auto fine = test::front_of(test::read_csv(fine_out / "probes.csv"), a, t_scale);
   test::check_time_origin_criterion(coarse, fine);
-  // Measured: 4.4% (at T = 2.25; 3.0% up to T = 1.5): the a/d = 20 front lags. a/d = 40 against
-  // 80 is 2.2% over T <= 2.5 (docs/validation.md; 118 s, too long for the suite), so the
-  // fronts converge and the issue's 3% holds from a/d = 40 on. Asserted here: 5% for 20 v 40.
+  // Measured: 2.5% over T <= 2.5 (the issue's 3%).
   double difference = test::front_difference(coarse, fine);
   MESSAGE("a/d = 20 against 40 over T <= 2.5: ", 100 * difference, "%");
-  CHECK(difference <= 0.05);
+  CHECK(difference <= 0.03);
 }
 
 // The preconditioner changes how the pressure equation is solved, not its solution: both solve
