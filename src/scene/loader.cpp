@@ -474,7 +474,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       val.fail(get("domain", "periodic").as_array()->get(a), "domain.periodic",
                "periodic axis " + std::to_string(a) + " is shorter than three support radii (" +
                    std::to_string(3 * sc.support_radius()) + " m)");
-  if (mps && sc.solver.preconditioner == "multigrid")
+  if ((mps || isph) && sc.solver.preconditioner == "multigrid")
     for (int a = 0; a < D; ++a)
       if (sc.periodic[a])
         val.fail(get("domain", "periodic").as_array()->get(a), "domain.periodic",
