@@ -21,8 +21,8 @@
 #include "systems/isph/isph_predictor.hpp"
 #include "systems/isph/isph_pressure_correction.hpp"
 #include "systems/isph/isph_pressure_equation.hpp"
-#include "systems/isph/isph_time_step.hpp"
 #include "systems/isph/isph_wall_guard.hpp"
+#include "systems/integrate/velocity_time_step.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
 #include "systems/pressure/linear_solve.hpp"
 #include "systems/pressure/preconditioner_setup.hpp"
@@ -58,6 +58,13 @@ IsphParameters<D> isph_parameters(const Scene& s) {
   double u = std::sqrt(2.0 * s.gravity_magnitude() * s.fluid_height());
   p.reference_speed = u > 0 ? u : 1e-9;
   return p;
+}
+
+// CFL on the velocity and the explicit viscosity's 0.125 h^2 / nu: no sound speed.
+template <int D>
+VelocityTimeStep<D> isph_time_step(const IsphParameters<D>& p) {
+  const double h = p.kernel.h();
+  return VelocityTimeStep<D>(p.cfl, p.spacing, p.reference_speed, p.nu > 0 ? 0.125 * h * h / p.nu : 0.0);
 }
 
 template <int D>
@@ -105,7 +112,7 @@ std::vector<SystemPtr<D>> isph_pipeline(const Scene& s, const IsphParameters<D>&
   }
   if (p.description != IsphDescription::Eulerian)
     list.push_back(std::make_shared<IsphWallGuard<D>>(p.domain, 0.5 * p.spacing));
-  if (s.fixed_dt <= 0) list.push_back(std::make_shared<IsphTimeStep<D>>(p));
+  if (s.fixed_dt <= 0) list.push_back(std::make_shared<VelocityTimeStep<D>>(isph_time_step<D>(p)));
   return list;
 }
 
@@ -117,7 +124,7 @@ MethodSetup<D> build_isph(const Scene& s, World<D>& world, const PipelineOptions
   m.context = method_context<D>(s, p.kernel);
   double vmax = 0;  // a scene may start moving (the rotating square)
   for (auto& u : world.column(components::velocity)) vmax = std::max(vmax, u.norm());
-  m.first_dt = IsphTimeStep<D>(p).limit(vmax);
+  m.first_dt = isph_time_step<D>(p).limit(vmax);
   p.relaxation_time = p.cfl * p.spacing / std::max(vmax, p.reference_speed);
   m.pipeline = isph_pipeline<D>(s, p);
   char b[96];

@@ -52,7 +52,7 @@ struct IsphParameters {
   double reference_speed = 1;  // sqrt(2 g H): bounds the first steps before anything moves
 
   // The list is built at x^n and reused at the predicted x*: a particle moves at most cfl * d
-  // per step (IsphTimeStep), two approach by at most twice that, plus the shift.
+  // per step (isph_time_step, VelocityTimeStep), two approach by at most twice that, plus the shift.
   double search_radius() const { return kernel.support() + 3.0 * cfl * spacing; }
 };
 

@@ -35,7 +35,7 @@ struct MpsParameters {
   double reference_speed = 1;  // sqrt(2 g H): bounds the first steps' dt before anything moves
   // The neighbour list is built once per step at x^k and reused at the predicted x*, so its
   // radius has a skin covering how far two particles can approach in one predictor step
-  // (each moves at most cfl * l0, see MpsTimeStep).
+  // (each moves at most cfl * l0, see mps_time_step, VelocityTimeStep).
   double search_radius() const { return weight.support() + 2.5 * cfl * spacing; }
 
   void set_weight(double influence_radius) {

@@ -1,0 +1,42 @@
+#pragma once
+// Time step of the projection methods (MPS, ISPH) for the next step: no sound speed bounds it,
+// only
+//   CFL:      cfl * d / max(|v|max, u_ref)   (u_ref = sqrt(2 g H), the speed a collapsing column
+//                                             of height H reaches: it bounds dt while the fluid is
+//                                             still at rest)
+//   viscous:  the method's explicit-viscosity bound (MPS 0.2 l0^2 / nu, ISPH 0.125 h^2 / nu)
+// The CFL bound keeps every particle's move per step below cfl * d, which the neighbour lists'
+// skins rely on (MpsParameters / IsphParameters::search_radius).
+#include <algorithm>
+
+#include "ecs/system.hpp"
+#include "systems/fluid/for_each_fluid.hpp"
+
+namespace ryushi {
+
+template <int D>
+class VelocityTimeStep final : public System<D> {
+ public:
+  // viscous_limit in seconds; 0 when the fluid is inviscid.
+  VelocityTimeStep(double cfl, double spacing, double reference_speed, double viscous_limit)
+      : cfl_(cfl), spacing_(spacing), reference_speed_(reference_speed), viscous_limit_(viscous_limit) {}
+  std::string name() const override { return "time_step_control"; }
+  Access access() const override {
+    return Access{}.read(components::velocity, components::kind).write(resources::dt);
+  }
+  void run(SystemContext<D>& ctx) override {
+    auto v = ctx.read(components::velocity);
+    auto kind = ctx.read(components::kind);
+    ctx.write(resources::dt) = limit(max_fluid_speed<D>(kind, v));
+  }
+  double limit(double vmax) const {
+    double dt = cfl_ * spacing_ / std::max(vmax, reference_speed_);
+    if (viscous_limit_ > 0) dt = std::min(dt, viscous_limit_);
+    return dt;
+  }
+
+ private:
+  double cfl_, spacing_, reference_speed_, viscous_limit_;
+};
+
+}  // namespace ryushi
