@@ -34,6 +34,7 @@
 #include "systems/isph/isph_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/operators/gradient.hpp"
+#include "systems/pressure/pressure_gauge.hpp"
 #include "systems/pressure/pressure_system.hpp"
 #include "systems/shifting/density_shifting.hpp"  // shifting_beta
 
@@ -276,6 +277,9 @@ class IsphPressureEquation final : public System<D> {
     sys.dimension = D;
     sys.bucket_width = support;
     sys.symmetric = false;
+    // The volumes are the left null vector of the standard (Morris) Laplacian of the fluid rows
+    // only (not of the corrected one, nor of wall rows): the solve finds the exact source.
+    fix_pressure_gauge(sys, [&](std::size_t r) { return volume_[sys.particle_of_row[r]]; }, false);
   }
 
  private:

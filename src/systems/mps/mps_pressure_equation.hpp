@@ -18,6 +18,7 @@
 #include "ecs/system.hpp"
 #include "systems/mps/mps_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
+#include "systems/pressure/pressure_gauge.hpp"
 #include "systems/pressure/pressure_system.hpp"
 
 namespace ryushi {
@@ -110,6 +111,7 @@ class MpsPressureEquation final : public System<D> {
     sys.dimension = D;
     sys.bucket_width = p_.weight.support();
     sys.symmetric = true;
+    fix_pressure_gauge(sys, [](std::size_t) { return 1.0; }, true);  // symmetric: y = 1
   }
 
  private:

@@ -3,6 +3,7 @@
 // scatters the solution into the `pressure` column (rows are particles; particles without a row
 // keep the Dirichlet value 0). The initial guess is the previous step's pressure or zero. A solve
 // that does not converge is a numerical failure: the step stops with the solver's reason.
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
@@ -43,9 +44,24 @@ class LinearSolve final : public System<D> {
         if (pre.M) M = pre.M.get();
       }
       solvers::SolveOptions o{spec_.tolerance, spec_.max_iterations};
-      status = spec_.krylov == "bicgstab" || !sys.symmetric
-                   ? solvers::bicgstab(sys.A, sys.b, x_, *M, o)
-                   : solvers::conjugate_gradient(sys.A, sys.b, x_, *M, o);
+      auto solve = [&](std::span<const double> b, std::span<double> x) {
+        return spec_.krylov == "bicgstab" || !sys.symmetric ? solvers::bicgstab(sys.A, b, x, *M, o)
+                                                             : solvers::conjugate_gradient(sys.A, b, x, *M, o);
+      };
+      status = solve(sys.b, x_);
+      if (status.converged && sys.gauge_free && !sys.gauge_exact) {
+        // pressure_gauge.hpp: the uniform source beta that makes the pinned row's equation hold.
+        uniform_.assign(rows, 1.0);
+        uniform_[sys.pinned_row] = 0.0;
+        z_.assign(rows, 0.0);
+        auto second = solve(uniform_, z_);
+        status.iterations += second.iterations;
+        if (!second.converged) status = second;
+        double ax = 0, az = 0;
+        for (auto& [col, val] : sys.pinned_equation) ax += val * x_[col], az += val * z_[col];
+        const double beta = (sys.pinned_rhs - ax) / (1.0 - az);
+        for (std::size_t r = 0; r < rows; ++r) x_[r] -= beta * z_[r];
+      }
       if (!status.converged) {
         char m[256];
         std::snprintf(
@@ -57,6 +73,14 @@ class LinearSolve final : public System<D> {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, p.size(), 4096), [&](auto range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) p[i] = 0.0;
     });
+    if (sys.gauge_free && rows > 0) {
+      // The level of a pressure without a Dirichlet value is a convention: the lowest is 0. The
+      // difference gradients (MPS, corrected ISPH) do not see it; the symmetric one, (p_i + p_j),
+      // pulls particles together where the pressure is negative (a zero mean blew the periodic
+      // shear layer up within 20 steps).
+      double lowest = *std::min_element(x_.begin(), x_.end());
+      for (double& xr : x_) xr -= lowest;
+    }
     for (std::size_t r = 0; r < rows; ++r) p[sys.particle_of_row[r]] = x_[r];
     ++stats.solves;
     stats.iterations += status.iterations;
@@ -69,7 +93,7 @@ class LinearSolve final : public System<D> {
  private:
   SolverSpec spec_;
   solvers::IdentityPreconditioner identity_;
-  std::vector<double> x_;
+  std::vector<double> x_, uniform_, z_;
 };
 
 }  // namespace ryushi

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ecs/resources.hpp"
@@ -22,6 +23,12 @@ struct PressureSystem {
   int dimension = 2;
   double bucket_width = 0;  // the influence radius: no coupling is longer
   bool symmetric = true;    // cg applies; otherwise bicgstab
+  // No Dirichlet value: p up to a constant, one row pinned (pressure_gauge.hpp). Unless b was
+  // made consistent exactly, the pinned row's own equation fixes a uniform source.
+  bool gauge_free = false, gauge_exact = true;
+  std::size_t pinned_row = 0;
+  std::vector<std::pair<std::uint32_t, double>> pinned_equation;  // A's row before pinning
+  double pinned_rhs = 0;
 };
 
 // Built by the preconditioner setup system; null means no preconditioner.
