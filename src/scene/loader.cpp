@@ -454,7 +454,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     for (std::size_t i = 0; i < arr->size(); ++i) {
       ProbeSpec p{*root["probe"][i]["name"].value<std::string>(), *root["probe"][i]["type"].value<std::string>(), {}};
       if (auto* pos = where("probe", i, "position")) p.position = vec_of(*pos);
-      if (p.type != "surge_front" && p.position.empty())
+      if ((p.type == "pressure" || p.type == "water_height") && p.position.empty())
         val.fail(&(*arr)[i], path_of("probe", i, "position"), "[[probe]] '" + p.name + "' of type " + p.type + " needs a position");
       if (!p.position.empty() && !inside(p.position, p.position))
         val.fail(where("probe", i, "position"), path_of("probe", i, "position"), "[[probe]] '" + p.name + "' lies outside the domain");

@@ -140,8 +140,8 @@ std::vector<SectionSpec> build() {
                 {"open_top", K::Bool, "", "true", "Leave the upper side (last axis) open."}}});
   s.push_back({"probe", true, false, "Measurements written to probes.csv (one column each).",
                {{"name", K::String, "", "", "Column name.", true},
-                choice("type", "", "pressure: kernel-interpolated (Shepard) fluid pressure at `position`; surge_front: max x of fluid particles + d/2; water_height: surface elevation of the water column standing on `position` (where the kernel-interpolated fill fraction, walls discounted, first falls below 1/2 going up; drops and wall films above a gap do not count; docs/output.md).",
-                       {"pressure", "surge_front", "water_height"}, true),
+                choice("type", "", "pressure: kernel-interpolated (Shepard) fluid pressure at `position`; surge_front: max x of fluid particles + d/2; water_height: surface elevation of the water column standing on `position` (where the kernel-interpolated fill fraction, walls discounted, first falls below 1/2 going up; drops and wall films above a gap do not count; docs/output.md); kinetic_energy: sum of m |v|^2 / 2 over the fluid (J, per metre of depth in 2D); potential_energy: sum of -m g . x over the fluid (zero at the origin).",
+                       {"pressure", "surge_front", "water_height", "kinetic_energy", "potential_energy"}, true),
                 {"position", K::Vector, "m", "", "Where to measure (pressure; for water_height the base of the vertical line, which reads this height when dry)."}}});
   s.push_back({"systems", true, false,
                "Registered systems added to the method's pipeline; the scheduler places them by their declared access. Keys besides `name` are the system's parameters (see below).",

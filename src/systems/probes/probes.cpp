@@ -65,12 +65,14 @@ double water_surface(const Vec<D>& base, const World<D>& world, const Kernel<D>&
 
 template <int D>
 std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const World<D>& world,
-                                  const Kernel<D>& kernel, double d, double rho0, const Domain<D>& domain) {
+                                  const Kernel<D>& kernel, double d, double rho0, const Domain<D>& domain,
+                                  const Vec<D>& gravity) {
   auto& x = world.column(components::position);
   auto& kind = world.column(components::kind);
   auto& p = world.column(components::pressure);
   auto& rho = world.column(components::density);
   auto& m = world.column(components::mass);
+  auto& v = world.column(components::velocity);
   const double lowest = -std::numeric_limits<double>::infinity();
   std::vector<double> out;
   for (auto& probe : probes) {
@@ -89,6 +91,12 @@ std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const Wo
         if (kind[i] == kFluid) acc.first = std::max(acc.first, x[i][0]);
       }, true);
       out.push_back(r.first + 0.5 * d);
+    } else if (probe.type == "kinetic_energy" || probe.type == "potential_energy") {
+      const bool kinetic = probe.type == "kinetic_energy";
+      auto r = reduce_particles(world.size(), {0.0, 0.0}, [&](std::size_t i, auto& acc) {
+        if (kind[i] == kFluid) acc.first += kinetic ? 0.5 * m[i] * v[i].squaredNorm() : -m[i] * gravity.dot(x[i]);
+      }, false);
+      out.push_back(r.first);
     } else {  // water_height
       out.push_back(water_surface<D>(at, world, kernel, rho0, domain.max[D - 1], d));
     }
@@ -97,8 +105,8 @@ std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const Wo
 }
 
 template std::vector<double> sample_probes<2>(const std::vector<ProbeSpec>&, const World<2>&, const Kernel<2>&,
-                                              double, double, const Domain<2>&);
+                                              double, double, const Domain<2>&, const Vec<2>&);
 template std::vector<double> sample_probes<3>(const std::vector<ProbeSpec>&, const World<3>&, const Kernel<3>&,
-                                              double, double, const Domain<3>&);
+                                              double, double, const Domain<3>&, const Vec<3>&);
 
 }  // namespace ryushi

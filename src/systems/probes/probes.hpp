@@ -13,6 +13,9 @@
 //                 Drops and particles clinging to a wall above a gap are not the column and do
 //                 not count; an isolated particle reaches f ~ 0.2. The base itself when no water
 //                 stands there; points inside walls (wall share > 0.9) are skipped.
+//   kinetic_energy    sum over fluid particles of m |v|^2 / 2 (J; J/m in 2D, per unit depth)
+//   potential_energy  sum over fluid particles of -m g . x (J; zero at the origin): with the
+//                     kinetic energy, the mechanical energy a sloshing tank may only lose
 #include <vector>
 
 #include "ecs/world.hpp"
@@ -24,6 +27,7 @@ namespace ryushi {
 
 template <int D>
 std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const World<D>& world,
-                                  const Kernel<D>& kernel, double spacing, double rho0, const Domain<D>& domain);
+                                  const Kernel<D>& kernel, double spacing, double rho0, const Domain<D>& domain,
+                                  const Vec<D>& gravity);
 
 }  // namespace ryushi
