@@ -37,4 +37,35 @@ inline Dataset read_dataset(const std::filesystem::path& file, const std::string
   return out;
 }
 
+// The last frame of a run (frames/frame_NNNNN.h5, the highest number).
+inline std::filesystem::path last_frame(const std::filesystem::path& run) {
+  std::filesystem::path last;
+  for (auto& e : std::filesystem::directory_iterator(run / "frames"))
+    if (e.path().extension() == ".h5" && e.path() > last) last = e.path();
+  REQUIRE_MESSAGE(!last.empty(), "no frame in " << run);
+  return last;
+}
+
+// Fluid particles (kind 0) of a 3D frame, and how many of them have their centre outside the box
+// [lo - margin, hi + margin] on every axis but the open top (the last axis has no upper bound).
+struct Containment {
+  std::size_t fluid = 0, outside = 0;
+};
+inline Containment fluid_containment(const std::filesystem::path& frame, const std::vector<double>& lo,
+                                     const std::vector<double>& hi, double margin) {
+  auto kind = read_dataset(frame, "kind").values, x = read_dataset(frame, "position").values;
+  const std::size_t D = lo.size();
+  Containment c;
+  for (std::size_t i = 0; i < kind.size(); ++i) {
+    if (kind[i] != 0) continue;
+    ++c.fluid;
+    for (std::size_t a = 0; a < D; ++a)
+      if (x[3 * i + a] < lo[a] - margin || (a + 1 < D && x[3 * i + a] > hi[a] + margin)) {
+        ++c.outside;
+        break;
+      }
+  }
+  return c;
+}
+
 }  // namespace ryushi::test

@@ -119,14 +119,16 @@ TEST_CASE("mps: dam break with MGCG and DCG gives the same flow") {
   CHECK(it_mg < 0.5 * it_dcg);  // measured 17 vs 139
 }
 
-TEST_CASE("mps: dam break runs past the far-wall impact and conserves mass") {
+TEST_CASE("mps: dam break runs past the far-wall impact and keeps its number density") {
   auto out = test::scratch("mps_dam_break");
   const double a = 0.25, t_scale = std::sqrt(a / (2 * 9.81));
-  auto opt = dam_break(out, 0.0125, 4.5 * t_scale);  // a / l0 = 20, T = 4.5
+  // a / l0 = 20 to T = 3.8: the front reaches the far wall at T = 3.15; the window ends at 2.5.
+  auto opt = dam_break(out, 0.0125, 3.8 * t_scale);
   opt.sets.push_back("output.probe_interval=0.002");
   REQUIRE(run_scene(opt) == kExitDone);
   auto summary = test::read_text(out / "summary.json");
-  // Measured mean interior n*/n0 0.99969 after the impact (a/l0 = 20, T = 4.5); bound as in the tank.
+  // Measured mean interior n*/n0 0.99995 just after the impact (a/l0 = 20, T = 3.8); bound as in
+  // the tank.
   CHECK(std::abs(test::json_number(summary, "interior_number_density_ratio") - 1) < 0.002);
   auto probes = test::read_csv(out / "probes.csv");
   auto& front = probes["surge_front"];
@@ -255,19 +257,32 @@ TEST_CASE("mps: bad solver and method input is a one-line error with exit code 2
 // The 3D scene at its coarse default (a / l0 = 10): through the far-wall impact with mass
 // exact and the front at the wall. Without the 0.8 l0 wall collision distance a particle passed
 // through the far wall at t = 0.35 s (a / l0 = 10 and 20), which the pressure assembly reports.
-TEST_CASE("mps: 3D dam break runs past the far-wall impact") {
+// The coarse 3D run (a/l0 = 10, r_e = 2.1 l0) to T = 3.5, past the impact on the far wall at
+// T = 3.15: the front meets the dam-break criterion (measured: shift 0.212, 2.52% after it, 17.5%
+// before), the interior number density holds (measured 1.0036; bound 2%: the coarse 3D weight
+// has few neighbours, 2D's 0.2% is not reachable), and no fluid particle has passed the first wall
+// layer (d/2 behind the faces). Not compared with 2D: 2D MPS uses r_e = 3.1 l0, another
+// discretisation (5.0% apart at l0 = 0.025).
+TEST_CASE("mps: 3D dam break front meets the criterion and stays in its tank through the impact") {
   auto out = test::scratch("mps_dam_break_3d");
+  const double a = 0.25, t_scale = std::sqrt(a / (2 * 9.81)), l0 = 0.025;
   RunOptions opt;
   opt.scene = test::scene_path("dam_break_mps_3d.toml");
   opt.out_dir = out.string();
   opt.quiet = true;
+  opt.end_time = 3.5 * t_scale;
+  opt.sets = {"output.probe_interval=0.002", "output.interval=" + std::to_string(3.5 * t_scale)};
   REQUIRE(run_scene(opt) == kExitDone);
   auto summary = test::read_text(out / "summary.json");
-  CHECK(test::json_number(summary, "simulated_time") == doctest::Approx(0.6));
-  // The coarse 3D run (a/l0 = 10, r_e = 2.1 l0) through the impact: measured 1.0061; bound 2%.
   CHECK(std::abs(test::json_number(summary, "interior_number_density_ratio") - 1) < 0.02);
   CHECK(test::json_number(summary, "max_relative_residual") <= 1e-8);
-  auto probes = test::read_csv(out / "probes.csv");
-  CHECK(probes["surge_front"].back() > 0.95);         // the far wall is at 1 m
-  CHECK(probes["surge_front"].back() < 1.0 + 0.025);  // and nothing went through it
+  auto front = test::front_of(test::read_csv(out / "probes.csv"), a, t_scale);
+  auto fit = test::fit_time_origin(front);
+  MESSAGE("3D, a/l0 = 10: unshifted front errors ", fit.unshifted, "| time-origin shift ", fit.shift,
+          " -> max error ", 100 * fit.error, "%");
+  CHECK(fit.error <= 0.03);
+  CHECK(front.Z.back() >= 3.9);  // the far wall is at Z = 4
+  auto inside = test::fluid_containment(test::last_frame(out), {0, 0, 0}, {1.0, 0.25, 0}, l0 / 2);
+  CHECK(inside.fluid == 2000);
+  CHECK(inside.outside == 0);
 }

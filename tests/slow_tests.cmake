@@ -4,13 +4,15 @@
 # 80 s 3D dam break to run alone at the end; with COST it starts them first, beside the quick
 # tests. A renamed test makes ctest stop with "Can not find test": update the name here.
 set_tests_properties(
-  "validation: 3D dam break scene completes at coarse resolution" PROPERTIES LABELS slow COST 80)
+  "validation: 3D dam break front meets the criterion, follows the 2D front and stays in its tank"
+  PROPERTIES LABELS slow COST 35)
 set_tests_properties(
-  "validation: 2D dam break surge front follows Martin and Moyce, runs past the impact, conserves mass"
+  "validation: 2D dam break surge front follows Martin and Moyce, runs past the impact, keeps its volume"
   PROPERTIES LABELS slow COST 61)
 set_tests_properties(
   "isph: dam break front meets the criterion at a/d = 20 and 40 and runs through the impact to t = 2 s"
   PROPERTIES LABELS slow COST 53)
 set_tests_properties("isph: a resting tank keeps rho g depth and stays still" PROPERTIES LABELS slow COST 27)
-set_tests_properties("mps: 3D dam break runs past the far-wall impact" PROPERTIES LABELS slow COST 18)
-set_tests_properties("mps: dam break runs past the far-wall impact and conserves mass" PROPERTIES LABELS slow COST 16)
+set_tests_properties("mps: 3D dam break front meets the criterion and stays in its tank through the impact"
+                     PROPERTIES LABELS slow COST 8)
+set_tests_properties("mps: dam break runs past the far-wall impact and keeps its number density" PROPERTIES LABELS slow COST 16)
