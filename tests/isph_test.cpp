@@ -128,6 +128,13 @@ TEST_CASE("isph: bad method and shifting keys exit 2 with the place") {
   check("[shifting]\nmax_shift = 1.5\n", "'max_shift' in [shifting] is 1.5");
   check("[shifting]\ncoefficient = -1.0\n", "'coefficient' in [shifting] is -1");
   check("[[wall]]\nmin = [0.2, 0.2]\nmax = [0.8, 0.8]\nlayers = 3\n", "method isph uses one layer of wall particles");
+  check("[[fixed_pressure]]\nmin = [0.2, 0.2]\nmax = [0.3, 0.6]\npressure = 1.0\n",
+        "[[fixed_pressure]] #0 needs [method] name = \"isph\" with description = \"eulerian\"");
+  check("description = \"eulerian\"\n[[fixed_pressure]]\nmin = [0.2, 0.2]\nmax = [0.3, 0.6]\n",
+        "'pressure'");
+  check("description = \"eulerian\"\n[[fixed_pressure]]\nmin = [0.3, 0.2]\nmax = [0.2, 0.6]\npressure = 1.0\n",
+        "[[fixed_pressure]] #0 is empty (max <= min)");
+  check("[[wall]]\nmin = [0.2, 0.2]\nmax = [0.8, 0.8]\nopen_ends = [true]\n", "'open_ends' in [[wall]]");
 }
 
 // A step shortened to land on a frame or the end time (issue 10) leaves the frame's pressure

@@ -14,9 +14,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "methods/method.hpp"
 #include "methods/scene_particles.hpp"
+#include "systems/isph/fixed_pressure_velocity.hpp"
 #include "systems/isph/isph_parameters.hpp"
 #include "systems/isph/isph_predictor.hpp"
 #include "systems/isph/isph_pressure_correction.hpp"
@@ -54,6 +56,7 @@ IsphParameters<D> isph_parameters(const Scene& s) {
   p.extrapolated_surface = s.free_surface_pressure == "extrapolated";
   p.wall_no_slip = !s.wall_slip;
   p.wall_shepard = s.isph_wall_rows == "shepard";
+  p.fixed_pressure = !s.fixed_pressure.empty();
   p.cfl = s.cfl;
   double u = std::sqrt(2.0 * s.gravity_magnitude() * s.fluid_height());
   p.reference_speed = u > 0 ? u : 1e-9;
@@ -85,6 +88,23 @@ void populate_isph_world(const Scene& s, const IsphParameters<D>& p, World<D>& w
     while (particles.wall_layer[next] != 1) ++next;
     normal[i] = particles.wall_normal[next++];
   }
+  if (!p.fixed_pressure) return;
+  // [[fixed_pressure]]: the fluid particles inside a box hold p = pressure + gradient . x.
+  auto& fixed = world.ensure(components::fixed_pressure);
+  auto& x = world.column(components::position);
+  auto& pressure = world.column(components::pressure);
+  for (std::size_t i = 0; i < world.size(); ++i) {
+    fixed[i] = std::numeric_limits<double>::quiet_NaN();
+    if (kind[i] != kFluid) continue;
+    for (auto& b : s.fixed_pressure) {
+      bool inside = true;
+      for (int a = 0; a < D; ++a) inside = inside && x[i][a] >= b.min[a] && x[i][a] <= b.max[a];
+      if (!inside) continue;
+      fixed[i] = b.pressure;
+      for (int a = 0; a < D; ++a) fixed[i] += b.gradient[a] * x[i][a];
+      pressure[i] = fixed[i];
+    }
+  }
 }
 
 template <int D>
@@ -102,6 +122,7 @@ std::vector<SystemPtr<D>> isph_pipeline(const Scene& s, const IsphParameters<D>&
   if (solver.preconditioner != "none") list.push_back(std::make_shared<PreconditionerSetup<D>>(solver));
   list.push_back(std::make_shared<LinearSolve<D>>(solver));
   list.push_back(std::make_shared<IsphPressureCorrection<D>>(p));
+  if (p.fixed_pressure) list.push_back(std::make_shared<FixedPressureVelocity<D>>(p.domain));
   if (p.description == IsphDescription::Ale && s.shifting_model == "density") {
     ShiftingParameters<D> sp{p.kernel, p.domain, p.spacing, p.rho0, s.shifting_coefficient};
     list.push_back(std::make_shared<ShiftingDensity<D>>(sp));

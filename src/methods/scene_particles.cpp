@@ -30,8 +30,9 @@ SceneParticles<D> scene_particles(const Scene& s) {
     Vec<D> lo = scene_vector<D>(w.min), hi = scene_vector<D>(w.max);
     std::array<long, D> from{}, to{};
     for (int a = 0; a < D; ++a) {
-      from[a] = -w.layers;
-      to[a] = std::lround((w.max[a] - w.min[a]) / d) + ((a == D - 1 && w.open_top) ? 0 : w.layers);
+      const bool open_ends = a < static_cast<int>(w.open_ends.size()) && w.open_ends[a];
+      from[a] = open_ends ? 0 : -w.layers;
+      to[a] = std::lround((w.max[a] - w.min[a]) / d) + ((open_ends || (a == D - 1 && w.open_top)) ? 0 : w.layers);
     }
     for_each_lattice_point<D>(lo, d, from, to, [&](const Vec<D>& q) {
       double outside = 0;  // how far the point lies outside the box, (layer - 1/2) d

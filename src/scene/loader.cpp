@@ -418,13 +418,17 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       const int covering = isph ? 1 : static_cast<int>(std::ceil(sc.support_radius() / sc.spacing - 1e-9));
       WallBox w{vec_of(*where("wall", i, "min")), vec_of(*where("wall", i, "max")),
                 static_cast<int>(root["wall"][i]["layers"].value_or(static_cast<long long>(covering))),
-                *root["wall"][i]["open_top"].value<bool>()};
+                *root["wall"][i]["open_top"].value<bool>(), {}};
+      w.open_ends.assign(D, false);
+      if (auto* open = root["wall"][i]["open_ends"].as_array())
+        for (int a = 0; a < D; ++a) w.open_ends[a] = *(*open)[a].value<bool>();
       for (int a = 0; a < D; ++a)
         if (!(w.max[a] > w.min[a]))
           val.fail(where("wall", i, "max"), path_of("wall", i, "max"), "[[wall]] #" + std::to_string(i) + " is empty (max <= min)");
       double thick = w.layers * sc.spacing;
       std::vector<double> lo = w.min, hi = w.max;
       for (int a = 0; a < D; ++a) {
+        if (w.open_ends[a]) continue;
         lo[a] -= thick;
         if (a < D - 1 || !w.open_top) hi[a] += thick;
       }
@@ -448,6 +452,26 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
         val.fail(root["wall"][i]["layers"].node() ? root["wall"][i]["layers"].node() : &(*arr)[i], path_of("wall", i, "layers"), m.str());
       }
       sc.walls.push_back(std::move(w));
+    }
+  }
+  if (auto* arr = root["fixed_pressure"].as_array()) {
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      FixedPressureBox b{vec_of(*where("fixed_pressure", i, "min")), vec_of(*where("fixed_pressure", i, "max")),
+                         std::vector<double>(D, 0.0), *root["fixed_pressure"][i]["pressure"].value<double>()};
+      if (auto* g = where("fixed_pressure", i, "gradient")) b.gradient = vec_of(*g);
+      // Particles that move would carry the value away, and the other methods have no such rows.
+      if (!isph || sc.isph_description != "eulerian")
+        val.fail(&(*arr)[i], path_of("fixed_pressure", i, "min"),
+                 "[[fixed_pressure]] #" + std::to_string(i) +
+                     " needs [method] name = \"isph\" with description = \"eulerian\" (fixed particles)");
+      for (int a = 0; a < D; ++a)
+        if (!(b.max[a] > b.min[a]))
+          val.fail(where("fixed_pressure", i, "max"), path_of("fixed_pressure", i, "max"),
+                   "[[fixed_pressure]] #" + std::to_string(i) + " is empty (max <= min)");
+      if (!std::isfinite(b.pressure))
+        val.fail(where("fixed_pressure", i, "pressure"), path_of("fixed_pressure", i, "pressure"),
+                 "[[fixed_pressure]] #" + std::to_string(i) + ": pressure must be finite");
+      sc.fixed_pressure.push_back(std::move(b));
     }
   }
   if (auto* arr = root["probe"].as_array()) {

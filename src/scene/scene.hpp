@@ -24,6 +24,13 @@ struct WallBox {
   std::vector<double> min, max;
   int layers = 3;
   bool open_top = true;
+  std::vector<bool> open_ends;  // per axis: no wall at either end (a channel's inlet and outlet)
+};
+// Fluid particles inside [min, max] at the start hold p = pressure + gradient . x (Dirichlet):
+// the inlet and outlet of an Eulerian ISPH channel.
+struct FixedPressureBox {
+  std::vector<double> min, max, gradient;
+  double pressure = 0;
 };
 struct ProbeSpec {
   std::string name, type;
@@ -81,6 +88,7 @@ struct Scene {
   std::vector<std::string> output_fields;
   std::vector<FluidBlock> fluid;
   std::vector<WallBox> walls;
+  std::vector<FixedPressureBox> fixed_pressure;
   std::vector<ProbeSpec> probes;
   std::vector<SystemSpec> systems;
 

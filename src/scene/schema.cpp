@@ -137,7 +137,14 @@ std::vector<SectionSpec> build() {
                {{"min", K::Vector, "m", "", "Inner lower corner.", true},
                 {"max", K::Vector, "m", "", "Inner upper corner.", true},
                 ranged({"layers", K::Integer, "", "(ceil(support radius / spacing))", "Wall thickness in particle layers; layers * spacing must cover the support radius."}, 1, 16),
-                {"open_top", K::Bool, "", "true", "Leave the upper side (last axis) open."}}});
+                {"open_top", K::Bool, "", "true", "Leave the upper side (last axis) open."},
+                {"open_ends", K::BoolVector, "", "(false on every axis)", "Per axis: no wall at either end of that axis (a channel's inlet and outlet, e.g. [true, false])."}}});
+  s.push_back({"fixed_pressure", true, false,
+               "isph, description = \"eulerian\": the fluid particles inside the box [min, max] hold the pressure p = pressure + gradient . x (a Dirichlet value: a channel's inlet or outlet). Make it at least a support radius long along the flow, so that the particles next to it have a full support. docs/isph.md.",
+               {{"min", K::Vector, "m", "", "Lower corner.", true},
+                {"max", K::Vector, "m", "", "Upper corner.", true},
+                {"pressure", K::Float, "Pa", "", "Pressure at x = 0 (plus gradient . x).", true},
+                {"gradient", K::Vector, "Pa/m", "(zero)", "Pressure gradient across the box, so that a linear pressure drop continues into it."}}});
   s.push_back({"probe", true, false, "Measurements written to probes.csv (one column each).",
                {{"name", K::String, "", "", "Column name.", true},
                 choice("type", "", "pressure: kernel-interpolated (Shepard) fluid pressure at `position`; surge_front: max x of fluid particles + d/2; water_height: surface elevation of the water column standing on `position` (where the kernel-interpolated fill fraction, walls discounted, first falls below 1/2 going up; drops and wall films above a gap do not count; docs/output.md); kinetic_energy: sum of m |v|^2 / 2 over the fluid (J, per metre of depth in 2D); potential_energy: sum of -m g . x over the fluid (zero at the origin).",

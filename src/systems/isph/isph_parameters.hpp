@@ -16,6 +16,9 @@ namespace ryushi {
 namespace components {
 // Unit normal of a wall particle, out of the fluid into the wall (ISPH's single wall layer).
 inline constexpr Component<Vector> wall_normal{"wall_normal"};
+// A fluid particle's Dirichlet pressure ([[fixed_pressure]], Eulerian channels); NaN where the
+// pressure is solved for. Only present when the scene has such boxes.
+inline constexpr Component<Scalar> fixed_pressure{"fixed_pressure"};
 }  // namespace components
 
 // The pressure stencil of a step: the neighbour list without the dry wall particles (walls above
@@ -48,6 +51,7 @@ struct IsphParameters {
   // with the Shepard one-sided difference to the fluid neighbours (positive weights, no wall-wall
   // coupling): see IsphPressureEquation.
   bool wall_shepard = false;
+  bool fixed_pressure = false;  // the scene has [[fixed_pressure]] boxes (the column exists)
   double cfl = 0.2;
   double reference_speed = 1;  // sqrt(2 g H): bounds the first steps before anything moves
 

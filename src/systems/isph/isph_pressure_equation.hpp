@@ -7,6 +7,8 @@
 //                                as eq. 18 writes it)
 //   fluid, interior              -<lap p>_i = -rho0/dt <div v*>_i                      (eq. 5)
 //   wetted wall                  n_i . <grad p>_i = rho0/dt (v*_i - v_wall,i) . n_i     (eq. 17)
+//   fluid in a [[fixed_pressure]] box: no row, its value moves to its neighbours' b (Eulerian
+//                                inlet and outlet: ISPH paper section 6(1))
 // <lap p> is the scene's Laplacian as weights (operators/laplacian_choice.hpp); <div v*> is the
 // corrected divergence, uncorrected where det(M_i) < uncorrected_divergence_det (I-SPH(2) 3(2));
 // wall neighbours carry their own velocity. The wall row holds the corrected gradient at the wall
@@ -47,12 +49,13 @@ class IsphPressureEquation final : public System<D> {
       : p_(p), beta_(shifting_beta(p.kernel, p.spacing)) {}
   std::string name() const override { return "ppe_assembly"; }
   Access access() const override {
-    return Access{}
-        .read(components::position, components::velocity, components::mass, components::density,
-              components::kind, components::id, components::free_surface, components::surface_normal,
-              components::wall_normal,
-              neighbours_resource, resources::dt)
+    Access a;
+    a.read(components::position, components::velocity, components::mass, components::density, components::kind,
+           components::id, components::free_surface, components::surface_normal, components::wall_normal,
+           neighbours_resource, resources::dt)
         .write(pressure_system_resource, pressure_neighbours_resource);
+    if (p_.fixed_pressure) a.read(components::fixed_pressure);
+    return a;
   }
   void initialise(World<D>&, Resources& res) override {
     res.ensure(pressure_system_resource);
@@ -78,6 +81,10 @@ class IsphPressureEquation final : public System<D> {
     const double h = p_.kernel.h(), support = p_.kernel.support(), d = p_.spacing;
     const double shell = 1.1 * std::sqrt(double(D)) * d;
     auto surface_normal = ctx.read(components::surface_normal);
+    // Dirichlet values other than 0: a neighbour without a row moves coefficient * value to b.
+    std::span<const double> fixed;
+    if (p_.fixed_pressure) fixed = ctx.read(components::fixed_pressure);
+    auto known = [&](std::size_t j) { return fixed.empty() || !std::isfinite(fixed[j]) ? 0.0 : fixed[j]; };
 
     // Which particles carry an unknown: interior fluid, surface fluid whose pressure is
     // extrapolated, and wetted walls.
@@ -86,6 +93,7 @@ class IsphPressureEquation final : public System<D> {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         if (kind[i] == kFluid) {
           unknown_[i] = !surface[i] || (p_.extrapolated_surface && moment_matrix(full_view, i).determinant() >= 0.2);
+          if (!fixed.empty() && std::isfinite(fixed[i])) unknown_[i] = 0;  // [[fixed_pressure]]
         } else if (kind[i] == kWall) {
           for (auto j : full.of(i)) {
             Vec<D> r = full_view.r(i, j);
@@ -146,7 +154,7 @@ class IsphPressureEquation final : public System<D> {
         const std::size_t i = sys.particle_of_row[r];
         auto nb = nl.of(i);
         entries.clear();
-        double diagonal = 0, rhs = 0;
+        double diagonal = 0, rhs = 0, from_known = 0;
         if (kind[i] == kFluid && surface[i]) {
           // p_i + d/2 N . sum_k g_k (p_k - p_i) = 0, times 1/d^2.
           gradient_weights_corrected(view, i, g);
@@ -155,6 +163,7 @@ class IsphPressureEquation final : public System<D> {
             const double along = 0.5 * surface_normal[i].dot(g[k]) / d;
             diagonal -= along;
             if (row_of_[nb[k]] != kNoRow && along != 0) entries.emplace_back(row_of_[nb[k]], along);
+            else from_known -= along * known(nb[k]);
           }
           rhs = 0;
         } else if (kind[i] == kFluid) {
@@ -168,6 +177,7 @@ class IsphPressureEquation final : public System<D> {
           for (std::size_t k = 0; k < nb.size(); ++k) {
             diagonal += w[k];
             if (row_of_[nb[k]] != kNoRow && w[k] != 0) entries.emplace_back(row_of_[nb[k]], -w[k]);
+            else from_known += w[k] * known(nb[k]);
           }
           const bool corrected = moment_matrix(view, i).determinant() >= p_.uncorrected_divergence_det;
           double div = 0;
@@ -215,6 +225,7 @@ class IsphPressureEquation final : public System<D> {
               const double s = volume_[j] * p_.kernel.w(r.norm()) / total;
               lever -= s * normal[i].dot(r);
               if (row_of_[j] != kNoRow && s != 0) entries.emplace_back(row_of_[j], -s / (h * h));
+              else from_known += s / (h * h) * known(j);
             }
           rhs = p_.rho0 / dt * (v_star_[i] - v[i]).dot(normal[i]) * lever / (h * h);
         } else {
@@ -224,9 +235,11 @@ class IsphPressureEquation final : public System<D> {
             const double along = normal[i].dot(g[k]) / h;
             diagonal -= along;
             if (row_of_[j] != kNoRow && along != 0) entries.emplace_back(row_of_[j], along);
+            else from_known -= along * known(j);
           }
           rhs = p_.rho0 / dt * (v_star_[i] - v[i]).dot(normal[i]) / h;
         }
+        rhs += from_known;
         if (!std::isfinite(diagonal) || !std::isfinite(rhs)) bad_row = std::min(bad_row, r);
         // A boundary row (surface or wall) that lost its weight along the normal (a thin splash,
         // a wall whose wetted neighbours lie beside it) is a Dirichlet row p_i = 0 instead.
@@ -274,6 +287,10 @@ class IsphPressureEquation final : public System<D> {
           A.val[A.row_ptr[r] + c] = vals_[r * stride + c];
         }
     });
+    sys.fixed_values.clear();
+    if (!fixed.empty())
+      for (std::size_t i = 0; i < n; ++i)
+        if (std::isfinite(fixed[i])) sys.fixed_values.emplace_back(static_cast<std::uint32_t>(i), fixed[i]);
     sys.dimension = D;
     sys.bucket_width = support;
     sys.symmetric = false;

@@ -1,8 +1,9 @@
 #pragma once
 // Solves the assembled pressure equation with the scene's Krylov method and preconditioner and
 // scatters the solution into the `pressure` column (rows are particles; particles without a row
-// keep the Dirichlet value 0). The initial guess is the previous step's pressure or zero. A solve
-// that does not converge is a numerical failure: the step stops with the solver's reason.
+// keep their Dirichlet value: 0, or the system's fixed_values). The initial guess is the previous
+// step's pressure or zero. A solve that does not converge is a numerical failure: the step stops
+// with the solver's reason.
 #include <algorithm>
 #include <cstdio>
 #include <stdexcept>
@@ -82,6 +83,7 @@ class LinearSolve final : public System<D> {
       for (double& xr : x_) xr -= lowest;
     }
     for (std::size_t r = 0; r < rows; ++r) p[sys.particle_of_row[r]] = x_[r];
+    for (auto& [i, value] : sys.fixed_values) p[i] = value;
     ++stats.solves;
     stats.iterations += status.iterations;
     stats.max_iterations = std::max(stats.max_iterations, status.iterations);

@@ -23,6 +23,8 @@ struct PressureSystem {
   int dimension = 2;
   double bucket_width = 0;  // the influence radius: no coupling is longer
   bool symmetric = true;    // cg applies; otherwise bicgstab
+  // Particles without a row whose Dirichlet value is not 0 (ISPH's [[fixed_pressure]]), with it.
+  std::vector<std::pair<std::uint32_t, double>> fixed_values;
   // No Dirichlet value: p up to a constant, one row pinned (pressure_gauge.hpp). Unless b was
   // made consistent exactly, the pinned row's own equation fixes a uniform source.
   bool gauge_free = false, gauge_exact = true;
