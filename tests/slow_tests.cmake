@@ -23,3 +23,7 @@ set_tests_properties("energy: a WCSPH sloshing tank never gains energy and keeps
 set_tests_properties(
   "energy: an ISPH sloshing tank never gains energy (known to fail: the paper set-up gains and stops)"
   PROPERTIES LABELS slow COST 12)
+set_tests_properties("validation: WCSPH dam break with Fickian shifting keeps the front and the particles apart"
+                     PROPERTIES LABELS slow COST 13)
+set_tests_properties("isph: 3D dam break runs through the impact, meets the front criterion and stays in its tank"
+                     PROPERTIES LABELS slow COST 13)

@@ -18,6 +18,7 @@
 #include "systems/integrate/midpoint.hpp"
 #include "systems/integrate/time_step.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
+#include "systems/shifting/fickian_shifting.hpp"
 
 namespace ryushi {
 
@@ -80,6 +81,17 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
   stage();
   list.push_back(std::make_shared<MidpointCorrector<D>>());
   list.push_back(eos);
+  if (s.shifting_model == "fickian") {
+    // Particle shifting after the step (issue 8: WCSPH may use ISPH's system): the free-surface
+    // rule of I-SPH(2) marks where only the tangential part of the shift is kept. The velocity is
+    // carried to the shifted place (Taylor); the density is not: delta-SPH's diffusion already
+    // smooths it, and a first-order correction of it did not change the dam break's front.
+    MethodContext<D> context = method_context<D>(s, p.kernel);
+    toml::table surface_rule{{"rule", "isph2"}, {"beta", 0.85}, {"moment_matrix", false}};
+    list.push_back(make_registered_system<D>("free_surface_detection", surface_rule, context));
+    list.push_back(std::make_shared<FickianShifting<D>>(FickianShiftingParameters<D>{
+        p.kernel, p.domain, p.spacing, s.fickian_coefficient, s.anti_clumping, s.max_shift, false}));
+  }
   if (s.fixed_dt <= 0) list.push_back(std::make_shared<TimeStepControl<D>>(p, s.cfl));
   return list;
 }

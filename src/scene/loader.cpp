@@ -335,7 +335,12 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.free_surface_pressure = *get("method", "free_surface_pressure").value<std::string>();
   sc.isph_wall_rows = *get("method", "wall_rows").value<std::string>();
   sc.compression_relaxation = *get("method", "compression_relaxation").value<double>();
-  sc.shifting_model = *get("shifting", "model").value<std::string>();
+  sc.shifting_model = root["shifting"]["model"].value_or(std::string(isph ? "density" : "none"));
+  if (sc.method == "wcsph" && sc.shifting_model == "density")
+    val.fail(root["shifting"]["model"].node(), "shifting.model",
+             "[shifting] model = \"density\" is ISPH's (its beta, eqs. 19-25); wcsph takes none or fickian");
+  if (mps && sc.shifting_model != "none")
+    val.fail(root["shifting"]["model"].node(), "shifting.model", "method mps has no particle shifting; leave [shifting] out");
   sc.shifting_coefficient = *get("shifting", "coefficient").value<double>();
   sc.fickian_coefficient = *get("shifting", "fickian_coefficient").value<double>();
   sc.anti_clumping = *get("shifting", "anti_clumping").value<double>();
