@@ -31,6 +31,7 @@
 #include "systems/pressure/pressure_system_dump.hpp"
 #include "systems/shifting/density_shifting.hpp"
 #include "systems/shifting/fickian_shifting.hpp"
+#include "systems/shifting/xsph_shifting.hpp"
 
 namespace ryushi {
 
@@ -130,6 +131,9 @@ std::vector<SystemPtr<D>> isph_pipeline(const Scene& s, const IsphParameters<D>&
   } else if (p.description == IsphDescription::Ale && s.shifting_model == "fickian") {
     list.push_back(std::make_shared<FickianShifting<D>>(FickianShiftingParameters<D>{
         p.kernel, p.domain, p.spacing, s.fickian_coefficient, s.anti_clumping, s.max_shift, true}));
+  } else if (p.description == IsphDescription::Ale && s.shifting_model == "xsph") {
+    list.push_back(std::make_shared<XsphShifting<D>>(
+        XsphShiftingParameters<D>{p.kernel, p.domain, p.spacing, s.xsph_epsilon, s.max_shift}));
   }
   if (p.description != IsphDescription::Eulerian)
     list.push_back(std::make_shared<IsphWallGuard<D>>(p.domain, 0.5 * p.spacing));

@@ -19,6 +19,7 @@
 #include "systems/integrate/time_step.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
 #include "systems/shifting/fickian_shifting.hpp"
+#include "systems/shifting/xsph_shifting.hpp"
 
 namespace ryushi {
 
@@ -81,7 +82,10 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
   stage();
   list.push_back(std::make_shared<MidpointCorrector<D>>());
   list.push_back(eos);
-  if (s.shifting_model == "fickian") {
+  if (s.shifting_model == "xsph") {
+    list.push_back(std::make_shared<XsphShifting<D>>(
+        XsphShiftingParameters<D>{p.kernel, p.domain, p.spacing, s.xsph_epsilon, s.max_shift}));
+  } else if (s.shifting_model == "fickian") {
     // Particle shifting after the step (issue 8: WCSPH may use ISPH's system): the free-surface
     // rule of I-SPH(2) marks where only the tangential part of the shift is kept. The velocity is
     // carried to the shifted place (Taylor); the density is not: delta-SPH's diffusion already

@@ -338,13 +338,14 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.shifting_model = root["shifting"]["model"].value_or(std::string(isph ? "density" : "none"));
   if (sc.method == "wcsph" && sc.shifting_model == "density")
     val.fail(root["shifting"]["model"].node(), "shifting.model",
-             "[shifting] model = \"density\" is ISPH's (its beta, eqs. 19-25); wcsph takes none or fickian");
+             "[shifting] model = \"density\" is ISPH's (its beta, eqs. 19-25); wcsph takes none, fickian or xsph");
   if (mps && sc.shifting_model != "none")
     val.fail(root["shifting"]["model"].node(), "shifting.model", "method mps has no particle shifting; leave [shifting] out");
   sc.shifting_coefficient = *get("shifting", "coefficient").value<double>();
   sc.fickian_coefficient = *get("shifting", "fickian_coefficient").value<double>();
   sc.anti_clumping = *get("shifting", "anti_clumping").value<double>();
   sc.max_shift = *get("shifting", "max_shift").value<double>();
+  sc.xsph_epsilon = *get("shifting", "xsph_epsilon").value<double>();
   sc.clamp_negative_pressure = *get("method", "clamp_negative_pressure").value<bool>();
   sc.collision_distance = *get("method", "collision_distance").value<double>();
   sc.collision_restitution = *get("method", "collision_restitution").value<double>();

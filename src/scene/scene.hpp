@@ -80,7 +80,7 @@ struct Scene {
   double shifting_coefficient = 0.005;
   std::string isph_wall_rows = "corrected";
   double compression_relaxation = 0.0;
-  double fickian_coefficient = 2.0, anti_clumping = 0.2, max_shift = 0.2;
+  double fickian_coefficient = 2.0, anti_clumping = 0.2, max_shift = 0.2, xsph_epsilon = 0.5;
   SolverSpec solver;
   double end_time = 0, cfl = 0.2, fixed_dt = 0, dt_min = 1e-9;
   long long max_steps = 0;

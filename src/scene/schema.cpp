@@ -99,11 +99,12 @@ std::vector<SectionSpec> build() {
                 ranged({"compression_relaxation", K::Float, "", "0.0", "isph: alpha of the stabilised source (Asai et al. 2012): interior rows add alpha rho0 (<rho>_i/rho0 - 1)/tau^2 where the density of eq. 19 exceeds rho0 (compression only), tau the larger of dt and the step of the flow at rest (cfl d / sqrt(2 g H)); it keeps particles from pairing up in violent flows; 0 turns it off (the paper's divergence-free source)."}, 0.0, 1.0),
                 ranged({"uncorrected_divergence_det", K::Float, "", "0.8", "isph: where det(M_i) (M_i = L_i^-1) is below this, the divergence of the pressure source is not corrected (I-SPH(2) section 3(2))."}, 0.0, 1.0)}});
   s.push_back({"shifting", false, false, "Particle shifting: isph with description = \"ale\" (docs/isph.md), and wcsph with model = \"fickian\" (docs/wcsph.md).",
-               {choice("model", "(density for isph; none for wcsph)", "none; density: density-based shifting (ISPH paper eqs. 19-25; isph only); fickian: dr = -A h |v| dt grad C (Lind et al. 2012, Skillen et al. 2013).", {"none", "density", "fickian"}),
+               {choice("model", "(density for isph; none for wcsph)", "none; density: density-based shifting (ISPH paper eqs. 19-25; isph only); fickian: dr = -A h |v| dt grad C (Lind et al. 2012, Skillen et al. 2013); xsph: transport with the XSPH-smoothed velocity, dr = eps dt sum 2 m_j/(rho_i + rho_j) (v_j - v_i) W_ij (I-SPH(2) eq. 9).", {"none", "density", "fickian", "xsph"}),
                 ranged({"coefficient", K::Float, "", "0.005", "density model: C_shift of eq. 20, dr = C_shift h (dr_w + dr_dens)."}, 0.0, 1.0),
                 ranged({"fickian_coefficient", K::Float, "", "2.0", "fickian model: A of dr = -A h |v| dt grad C (Skillen et al. 2013 recommend 1-6)."}, 0.0, 100.0),
                 ranged({"anti_clumping", K::Float, "", "0.2", "fickian model: R of the anti-clumping term, grad C = sum V_j (1 + R (W_ij/W(d))^4) grad W_ij (Lind et al. 2012)."}, 0.0, 10.0),
-                ranged({"max_shift", K::Float, "", "0.2", "fickian model: largest shift per step, in particle spacings."}, 0.0, 1.0)}});
+                ranged({"max_shift", K::Float, "", "0.2", "fickian and xsph models: largest shift per step, in particle spacings."}, 0.0, 1.0),
+                ranged({"xsph_epsilon", K::Float, "", "0.5", "xsph model: eps of the velocity smoothing (Monaghan 1989: 0.5)."}, 0.0, 1.0)}});
   s.push_back({"time", false, true, "Time control.",
                {positive("end", "s", "", "Simulated end time.", true),
                 ranged({"cfl", K::Float, "", "0.2", "CFL number for the adaptive step dt = cfl h / (c0 + |v|max), also bounded by force and viscous limits."}, 1e-6, 1.0),
