@@ -27,3 +27,5 @@ set_tests_properties("validation: WCSPH dam break with Fickian shifting keeps th
                      PROPERTIES LABELS slow COST 13)
 set_tests_properties("isph: 3D dam break runs through the impact, meets the front criterion and stays in its tank"
                      PROPERTIES LABELS slow COST 13)
+set_tests_properties("energy: an ISPH sloshing tank with the violent-flow set-up never gains energy and keeps the period"
+                     PROPERTIES LABELS slow COST 18)
