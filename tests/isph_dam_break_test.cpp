@@ -88,7 +88,7 @@ TEST_CASE("isph: the dam break's front is the same with the multigrid and with J
 
 // The I-SPH(2) column collapse (seed 000, I-SPH(2) section 5: a 40 cm square column in a 300 cm
 // tank) with scenes/dam_break_isph2_2d.toml's set-up, coarse (d = 2 cm, a/d = 20) to t = 1.0 s:
-// the front reaches the far wall (measured at t = 0.87 s; 0.75 s at the paper's d = 0.5 cm),
+// the front reaches the far wall (0.78 s at the paper's d = 0.5 cm),
 // advances without stalling or blowing back until then, and no particle passes the far wall
 // (the front stays within half a spacing of it). The paper's own operators stop at t = 0.41 s
 // here (docs/isph.md).
