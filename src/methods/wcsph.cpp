@@ -88,8 +88,8 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
   } else if (s.shifting_model == "fickian") {
     // Particle shifting after the step (issue 8: WCSPH may use ISPH's system): the free-surface
     // rule of I-SPH(2) marks where only the tangential part of the shift is kept. The velocity is
-    // carried to the shifted place (Taylor); the density is not: delta-SPH's diffusion already
-    // smooths it, and a first-order correction of it did not change the dam break's front.
+    // carried to the shifted place (Taylor); the density is not (delta-SPH's diffusion smooths
+    // it; a correction is not measured yet).
     MethodContext<D> context = method_context<D>(s, p.kernel);
     toml::table surface_rule{{"rule", "isph2"}, {"beta", 0.85}, {"moment_matrix", false}};
     list.push_back(make_registered_system<D>("free_surface_detection", surface_rule, context));

@@ -78,7 +78,7 @@ class LinearSolve final : public System<D> {
       // The level of a pressure without a Dirichlet value is a convention: the lowest is 0. The
       // difference gradients (MPS, corrected ISPH) do not see it; the symmetric one, (p_i + p_j),
       // pulls particles together where the pressure is negative (a zero mean blew the periodic
-      // shear layer up within 20 steps).
+      // shear layer up within 22 steps).
       double lowest = *std::min_element(x_.begin(), x_.end());
       for (double& xr : x_) xr -= lowest;
     }
