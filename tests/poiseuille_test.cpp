@@ -38,53 +38,26 @@ double morris(double y, double t) {
   return u;
 }
 
-// scenes/poiseuille_isph_2d.toml at spacing d (the geometry moves with d: the wall particles stay
-// on y = 0 and y = l, the buffers are three spacings long).
-std::string channel(double d) {
+// scenes/poiseuille_isph_2d.toml at spacing d: the geometry moves with d (the wall particles stay
+// on y = 0 and y = l, the buffers are three spacings long), set on the shipped scene.
+std::vector<std::string> channel_at(double d) {
   const double b = 3 * d;
-  char s[2048];
-  std::snprintf(s, sizeof s, R"([scene]
-dimension = 2
-name = "poiseuille"
-[domain]
-min = [%.9g, -0.0005]
-max = [%.9g, 0.0015]
-[particles]
-spacing = %.9g
-[material]
-density = 1000.0
-viscosity = 1.0e-3
-[physics]
-gravity = [0.0, 0.0]
-[method]
-name = "isph"
-description = "eulerian"
-[time]
-end = 0.5
-[output]
-interval = 0.05
-[[fluid]]
-min = [%.9g, %.9g]
-max = [%.9g, %.9g]
-[[wall]]
-min = [%.9g, %.9g]
-max = [%.9g, %.9g]
-open_ends = [true, false]
-open_top = false
-[[fixed_pressure]]
-min = [%.9g, 0.0]
-max = [0.0, 0.001]
-pressure = 1.0
-gradient = [-500.0, 0.0]
-[[fixed_pressure]]
-min = [0.002, 0.0]
-max = [%.9g, 0.001]
-pressure = 1.0
-gradient = [-500.0, 0.0]
-)",
-                -b - 5e-4, kLength + b + 5e-4, d, -b, d / 2, kLength + b, kWidth - d / 2, -b, d / 2, kLength + b,
-                kWidth - d / 2, -b, kLength + b);
-  return s;
+  auto vec = [](double x, double y) {
+    char s[96];
+    std::snprintf(s, sizeof s, "[%.9g, %.9g]", x, y);
+    return std::string(s);
+  };
+  char spacing[48];
+  std::snprintf(spacing, sizeof spacing, "particles.spacing=%.9g", d);  // std::to_string keeps 6 decimals
+  return {spacing,
+          "domain.min=" + vec(-b - 5e-4, -5e-4),
+          "domain.max=" + vec(kLength + b + 5e-4, kWidth + 5e-4),
+          "fluid.0.min=" + vec(-b, d / 2),
+          "fluid.0.max=" + vec(kLength + b, kWidth - d / 2),
+          "wall.0.min=" + vec(-b, d / 2),
+          "wall.0.max=" + vec(kLength + b, kWidth - d / 2),
+          "fixed_pressure.0.min=" + vec(-b, 0),
+          "fixed_pressure.1.max=" + vec(kLength + b, kWidth)};
 }
 
 // L2 error of u across the column nearest x = L/2, relative to the series' centreline speed.
@@ -114,11 +87,11 @@ TEST_CASE("isph poiseuille: the Eulerian channel follows the Morris start-up and
   for (int cells : {10, 16, 20}) {
     const double d = kWidth / cells;
     auto dir = test::scratch("poiseuille_" + std::to_string(cells));
-    test::write_text(dir / "channel.toml", channel(d));
     RunOptions opt;
-    opt.scene = (dir / "channel.toml").string();
+    opt.scene = test::scene_path("poiseuille_isph_2d.toml");
     opt.out_dir = (dir / "out").string();
     opt.quiet = true;
+    opt.sets = channel_at(d);
     REQUIRE(run_scene(opt) == kExitDone);
     std::array<double, 3> e{};
     for (int k = 0; k < 3; ++k) {

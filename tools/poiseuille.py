@@ -1,11 +1,12 @@
 """Poiseuille channel of scenes/poiseuille_isph_2d.toml at any resolution, and its error against
 the start-up series of Morris, Fox & Zhu (1997, eq. 21), as tests/poiseuille_test.cpp computes it.
 
-    /usr/bin/python3 tools/poiseuille.py scene CELLS > channel.toml   # l/d = CELLS
-    /usr/bin/python3 tools/poiseuille.py error RUN_DIR                # one line per frame
+    eval build/ryushi run scenes/poiseuille_isph_2d.toml --out o $(/usr/bin/python3 tools/poiseuille.py sets 50)
+    /usr/bin/python3 tools/poiseuille.py error o                      # one line per frame
 
-The geometry moves with d: wall particles on y = 0 and y = l = 1 mm, fluid rows d, 2d, ...,
-buffers ([[fixed_pressure]]) three spacings long beyond x = 0 and x = L = 2 mm. The error is the
+`sets CELLS` prints the --set arguments for l/d = CELLS: the geometry moves with d (wall
+particles on y = 0 and y = l = 1 mm, fluid rows d, 2d, ..., buffers ([[fixed_pressure]]) three
+spacings long beyond x = 0 and x = L = 2 mm), as tests/poiseuille_test.cpp sets it. The error is the
 L2 difference of u across the column nearest x = L/2, relative to the series' centreline speed.
 """
 import glob
@@ -25,48 +26,17 @@ def morris(y, t):
     return u
 
 
-def scene(cells):
+def sets(cells):
+    """The --set arguments that put scenes/poiseuille_isph_2d.toml at l/d = cells."""
     d = WIDTH / cells
     b = 3 * d
-    return f"""[scene]
-dimension = 2
-name = "poiseuille_{cells}"
-[domain]
-min = [{-b - 5e-4:.9g}, -0.0005]
-max = [{LENGTH + b + 5e-4:.9g}, 0.0015]
-[particles]
-spacing = {d:.9g}
-[material]
-density = 1000.0
-viscosity = 1.0e-3
-[physics]
-gravity = [0.0, 0.0]
-[method]
-name = "isph"
-description = "eulerian"
-[time]
-end = 0.5
-[output]
-interval = 0.05
-[[fluid]]
-min = [{-b:.9g}, {d / 2:.9g}]
-max = [{LENGTH + b:.9g}, {WIDTH - d / 2:.9g}]
-[[wall]]
-min = [{-b:.9g}, {d / 2:.9g}]
-max = [{LENGTH + b:.9g}, {WIDTH - d / 2:.9g}]
-open_ends = [true, false]
-open_top = false
-[[fixed_pressure]]
-min = [{-b:.9g}, 0.0]
-max = [0.0, 0.001]
-pressure = 1.0
-gradient = [-500.0, 0.0]
-[[fixed_pressure]]
-min = [0.002, 0.0]
-max = [{LENGTH + b:.9g}, 0.001]
-pressure = 1.0
-gradient = [-500.0, 0.0]
-"""
+    vec = lambda x, y: f"[{x:.9g}, {y:.9g}]"
+    pairs = [("particles.spacing", f"{d:.9g}"),
+             ("domain.min", vec(-b - 5e-4, -5e-4)), ("domain.max", vec(LENGTH + b + 5e-4, WIDTH + 5e-4)),
+             ("fluid.0.min", vec(-b, d / 2)), ("fluid.0.max", vec(LENGTH + b, WIDTH - d / 2)),
+             ("wall.0.min", vec(-b, d / 2)), ("wall.0.max", vec(LENGTH + b, WIDTH - d / 2)),
+             ("fixed_pressure.0.min", vec(-b, 0)), ("fixed_pressure.1.max", vec(LENGTH + b, WIDTH))]
+    return " ".join(f"--set '{k}={v}'" for k, v in pairs)
 
 
 def errors(run):
@@ -87,8 +57,8 @@ def errors(run):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) == 3 and sys.argv[1] == "scene":
-        print(scene(int(sys.argv[2])), end="")
+    if len(sys.argv) == 3 and sys.argv[1] == "sets":
+        print(sets(int(sys.argv[2])))
     elif len(sys.argv) == 3 and sys.argv[1] == "error":
         errors(sys.argv[2])
     else:
