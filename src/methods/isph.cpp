@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "methods/isph2_surface_detection.hpp"
 #include "methods/method.hpp"
 #include "methods/scene_particles.hpp"
 #include "systems/isph/fixed_pressure_velocity.hpp"
@@ -111,13 +112,12 @@ void populate_isph_world(const Scene& s, const IsphParameters<D>& p, World<D>& w
 template <int D>
 std::vector<SystemPtr<D>> isph_pipeline(const Scene& s, const IsphParameters<D>& p) {
   MethodContext<D> context = method_context<D>(s, p.kernel);
-  toml::table surface_rule{{"rule", "isph2"}, {"beta", 0.85}, {"moment_matrix", false}};
   SolverSpec solver = s.solver;
   solver.krylov = "bicgstab";
   std::vector<SystemPtr<D>> list{
       std::make_shared<NeighbourSearch<D>>(p.search_radius(), kDummy),
       std::make_shared<IsphPredictor<D>>(p),
-      make_registered_system<D>("free_surface_detection", surface_rule, context),
+      isph2_surface_detection<D>(context),
       std::make_shared<IsphPressureEquation<D>>(p),
   };
   if (solver.preconditioner != "none") list.push_back(std::make_shared<PreconditionerSetup<D>>(solver));

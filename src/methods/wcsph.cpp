@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "methods/isph2_surface_detection.hpp"
 #include "methods/method.hpp"
 
 #include "methods/scene_particles.hpp"
@@ -90,9 +91,7 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
     // rule of I-SPH(2) marks where only the tangential part of the shift is kept. The velocity is
     // carried to the shifted place (Taylor); the density is not (delta-SPH's diffusion smooths
     // it; a correction is not measured yet).
-    MethodContext<D> context = method_context<D>(s, p.kernel);
-    toml::table surface_rule{{"rule", "isph2"}, {"beta", 0.85}, {"moment_matrix", false}};
-    list.push_back(make_registered_system<D>("free_surface_detection", surface_rule, context));
+    list.push_back(isph2_surface_detection<D>(method_context<D>(s, p.kernel)));
     list.push_back(std::make_shared<FickianShifting<D>>(FickianShiftingParameters<D>{
         p.kernel, p.domain, p.spacing, s.fickian_coefficient, s.anti_clumping, s.max_shift, false}));
   }

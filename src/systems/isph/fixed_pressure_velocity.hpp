@@ -10,6 +10,8 @@
 // harmless.
 #include <limits>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "ecs/system.hpp"
 #include "systems/isph/isph_parameters.hpp"
@@ -51,15 +53,26 @@ class FixedPressureVelocity final : public System<D> {
     auto id = ctx.read(components::id);
     auto source = ctx.read(components::velocity_source);
     auto v = ctx.write(components::velocity);
-    index_of_id_.clear();
-    for (std::size_t i = 0; i < id.size(); ++i) index_of_id_[id[i]] = i;
-    for (std::size_t i = 0; i < id.size(); ++i)
-      if (source[i] >= 0) v[i] = v[index_of_id_.at(source[i])];
+    // The pairs (buffer particle, source) as indices, rebuilt only when the particles were
+    // reordered since the last step (Eulerian particles stay; ISPH does not reorder them).
+    bool valid = !pairs_.empty();
+    for (std::size_t k = 0; valid && k < pairs_.size(); ++k) {
+      auto [i, from] = pairs_[k];
+      valid = i < id.size() && from < id.size() && source[i] >= 0 && id[from] == source[i];
+    }
+    if (!valid) {
+      std::unordered_map<std::int32_t, std::size_t> index_of_id;
+      for (std::size_t i = 0; i < id.size(); ++i) index_of_id[id[i]] = i;
+      pairs_.clear();
+      for (std::size_t i = 0; i < id.size(); ++i)
+        if (source[i] >= 0) pairs_.emplace_back(i, index_of_id.at(source[i]));
+    }
+    for (auto& [i, from] : pairs_) v[i] = v[from];
   }
 
  private:
   Domain<D> domain_;
-  std::unordered_map<std::int32_t, std::size_t> index_of_id_;
+  std::vector<std::pair<std::size_t, std::size_t>> pairs_;
 };
 
 }  // namespace ryushi

@@ -15,9 +15,10 @@
 // it, and the symmetric one, (p_i + p_j), clumps particles where it is negative.
 // With the corrected Laplacian the volumes are only close to the left null vector: what remains of
 // b's inconsistency would land on the pinned particle as a point source (the periodic shear layer
-// blew up at t = 0.26 s near the pin in the first row, at 0.24 s near a pin in the middle). Then (`gauge_exact` false) the solve
-// finds the uniform source beta that makes the pinned row's own equation hold, with a second solve
-// of the pinned system against the uniform source (LinearSolve): p = x - beta z.
+// blew up at t = 0.26 s near the pin in the first row, at 0.24 s near a pin in the middle). Then
+// (`gauge_exact` false) the solve finds the uniform source beta that makes the pinned row's own
+// equation hold, with a second solve of the pinned system against the uniform source
+// (LinearSolve): p = x - beta z.
 #include <cmath>
 #include <cstddef>
 #include <vector>
