@@ -1,7 +1,7 @@
 // The weakly compressible SPH method as a recipe: which systems, in which order, with which
 // options from the scene, registered as "wcsph". One step: neighbour search, then two stages of
-// [wall BC, density gradient, continuity, momentum, viscosity] around the predictor and
-// corrector, the equation of state after each, and the time-step control.
+// [wall BC, density gradient, pair forces (continuity, momentum, viscosity in one pass)] around
+// the predictor and corrector, the equation of state after each, and the time-step control.
 #include <cmath>
 #include <cstdio>
 
@@ -11,11 +11,9 @@
 #include "methods/scene_particles.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
 #include "systems/boundary/adami_wall.hpp"
-#include "systems/fluid/continuity_delta_sph.hpp"
-#include "systems/fluid/laminar_viscosity_morris.hpp"
-#include "systems/fluid/momentum.hpp"
 #include "systems/fluid/renormalised_density_gradient.hpp"
 #include "systems/fluid/tait_equation_of_state.hpp"
+#include "systems/fluid/wcsph_pair_forces.hpp"
 #include "systems/integrate/midpoint.hpp"
 #include "systems/integrate/time_step.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
@@ -64,18 +62,14 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
   auto neighbours = std::make_shared<NeighbourSearch<D>>(p.kernel.support(), kWall);
   auto wall = std::make_shared<AdamiWall<D>>(p);
   auto gradient = std::make_shared<RenormalisedDensityGradient<D>>(p);
-  auto continuity = std::make_shared<ContinuityDeltaSph<D>>(p);
-  auto momentum = std::make_shared<Momentum<D>>(p);
-  auto viscosity = std::make_shared<LaminarViscosityMorris<D>>(p);
+  auto forces = std::make_shared<WcsphPairForces<D>>(p);
   auto eos = std::make_shared<TaitEquationOfState<D>>(p);
 
   std::vector<SystemPtr<D>> list{neighbours};
   auto stage = [&] {
     if (!s.walls.empty()) list.push_back(wall);
     if (p.delta > 0) list.push_back(gradient);
-    list.push_back(continuity);
-    list.push_back(momentum);
-    if (p.mu > 0) list.push_back(viscosity);
+    list.push_back(forces);
   };
   stage();
   list.push_back(std::make_shared<MidpointPredictor<D>>());

@@ -46,4 +46,12 @@ inline void particle_volumes(std::span<const double> m, std::span<const double> 
   });
 }
 
+// 1/rho_i per particle: a pair loop multiplies instead of dividing.
+inline void inverse_densities(std::span<const double> rho, std::vector<double>& out) {
+  out.resize(rho.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rho.size(), 4096), [&](auto r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) out[i] = 1.0 / rho[i];
+  });
+}
+
 }  // namespace ryushi
