@@ -4,6 +4,7 @@
 #include <random>
 #include <set>
 
+#include "ecs/system.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
 
 using namespace ryushi;
@@ -11,11 +12,13 @@ using namespace ryushi;
 namespace {
 
 template <int D>
-std::vector<std::set<std::uint32_t>> brute_force(const Domain<D>& dom, double r, const std::vector<Vec<D>>& x) {
+std::vector<std::set<std::uint32_t>> brute_force(const Domain<D>& dom, double r,
+                                                 const std::vector<Vec<D>>& x) {
   std::vector<std::set<std::uint32_t>> out(x.size());
   for (std::size_t i = 0; i < x.size(); ++i)
     for (std::size_t j = 0; j < x.size(); ++j)
-      if (i != j && dom.displacement(x[i], x[j]).squaredNorm() <= r * r) out[i].insert(static_cast<std::uint32_t>(j));
+      if (i != j && dom.displacement(x[i], x[j]).squaredNorm() <= r * r)
+        out[i].insert(static_cast<std::uint32_t>(j));
   return out;
 }
 
@@ -72,8 +75,7 @@ TEST_CASE("neighbours: uniform random and clustered sets, 2D and 3D") {
   for (int i = 0; i < 1500; ++i) x2.push_back(Vec<2>(u(rng), u(rng)));
   for (int c = 0; c < 5; ++c) {  // dense clusters: many particles per cell
     Vec<2> centre(u(rng), u(rng));
-    for (int i = 0; i < 200; ++i)
-      x2.push_back((centre + Vec<2>(n(rng), n(rng))).cwiseMax(0.0).cwiseMin(1.0));
+    for (int i = 0; i < 200; ++i) x2.push_back((centre + Vec<2>(n(rng), n(rng))).cwiseMax(0.0).cwiseMin(1.0));
   }
   check_against_brute_force<2>(unit_box<2>(1.0), 0.05, x2);
   std::vector<Vec<3>> x3;
@@ -138,5 +140,66 @@ TEST_CASE("neighbours: skipping pairs of one kind leaves every other pair in pla
     auto got = list.of(i);
     CHECK(std::set<std::uint32_t>(got.begin(), got.end()) == want);
     CHECK(std::is_sorted(got.begin(), got.end()));
+  }
+}
+
+// The Verlet list (NeighbourSearch with a skin) against a fresh build at every step of a random
+// motion: the filtered list must be the very list a rebuild gives (same pairs, same order), also
+// right after a reordering and across steps where particles move up to half the skin; and it must
+// actually be reused (fewer builds than steps), or the skin would buy nothing.
+TEST_CASE("neighbours: a Verlet list with a skin gives the rebuilt list at every step") {
+  for (bool periodic : {false, true}) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(0.0, 1.0), s(-1.0, 1.0);
+    const double radius = 0.06, skin = 0.02, dt = 1e-3;
+    Domain<2> dom;
+    dom.periodic = {periodic, false};
+    World<2> w;
+    w.append(1500, kFluid);
+    w.append(100, kWall);
+    auto& x = w.ensure(components::position);
+    auto& v = w.ensure(components::velocity);
+    for (std::size_t i = 0; i < w.size(); ++i) {
+      x[i] = {u(rng), u(rng)};
+      v[i] = {s(rng), s(rng)};  // |v| dt <= 1.4e-3: several steps per rebuild
+    }
+    Resources res;
+    res.ensure(domain_resource<2>) = dom;
+    res.ensure(resources::dt) = dt;
+    NeighbourSearch<2> search(radius, kWall, skin);
+    search.initialise(w, res);
+    auto access = search.access();
+    std::size_t steps = 60;
+    for (std::size_t step = 0; step < steps; ++step) {
+      if (step == 30) {  // a reordering between steps: indices change, the list must follow
+        std::vector<std::uint32_t> order(w.size());
+        for (std::size_t k = 0; k < order.size(); ++k) order[k] = std::uint32_t(order.size() - 1 - k);
+        w.permute(order);
+      }
+      SystemContext<2> ctx(w, res, access, "test");
+      search.run(ctx);
+      CellGrid<2> grid;
+      NeighbourList fresh;
+      build_neighbour_list<2>(dom, radius, w.column(components::position), grid, fresh,
+                              w.column(components::kind), kWall);
+      const auto& list = res.get(neighbours_resource);
+      REQUIRE(list.size() == fresh.size());
+      CHECK(list.offsets == fresh.offsets);
+      CHECK(list.indices == fresh.indices);
+      // Move; positions wrap on the periodic axis (the minimum image keeps that a small move).
+      auto& xs = w.column(components::position);
+      const auto& vs = w.column(components::velocity);
+      const auto& kind = w.column(components::kind);
+      for (std::size_t i = 0; i < w.size(); ++i) {
+        if (kind[i] != kFluid) continue;
+        xs[i] += dt * vs[i];
+        if (periodic) xs[i][0] -= std::floor(xs[i][0]);
+        xs[i][1] = std::clamp(xs[i][1], 0.0, 1.0);
+      }
+    }
+    const auto builds = res.get(neighbours_resource).builds;
+    INFO("periodic " << periodic << ": " << builds << " builds in " << steps << " steps");
+    CHECK(builds >= 3);          // the motion of 60 steps (up to 0.085) exceeds the skin: rebuilt
+    CHECK(builds <= steps / 3);  // and reused in between
   }
 }

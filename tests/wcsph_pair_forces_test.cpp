@@ -9,6 +9,8 @@
 // tighter; this is the simplest bound that is still 1e4 above the expected ~1e-16 x 30).
 // A neighbour list with a skin (pairs beyond the support) must give the same result: the pass
 // skips them, the references see zero kernel gradients there.
+#include "systems/fluid/wcsph_pair_forces.hpp"
+
 #include <doctest/doctest.h>
 
 #include <random>
@@ -16,7 +18,6 @@
 #include "systems/fluid/continuity_delta_sph.hpp"
 #include "systems/fluid/laminar_viscosity_morris.hpp"
 #include "systems/fluid/momentum.hpp"
-#include "systems/fluid/wcsph_pair_forces.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
 
 using namespace ryushi;

@@ -368,6 +368,8 @@ class Runner {
     w.key("wall_time_s").value(wall);
     w.key("particle_steps_per_second").value(wall > 0 ? world_.size() * double(step_) / wall : 0.0);
     w.key("frames").value(static_cast<std::int64_t>(frames_.size()));
+    // Steps per build tell whether a Verlet skin pays (method wcsph, [particles] neighbour_skin).
+    w.key("neighbour_list_builds").value(static_cast<std::int64_t>(nl.builds));
     w.key("bytes_per_particle").begin_object();
     w.key("columns").value(static_cast<std::int64_t>(world_.bytes_per_particle()));
     w.key("neighbour_list").value(world_.size() ? double(nl.bytes()) / world_.size() : 0.0);

@@ -26,6 +26,7 @@ class SystemContext {
       : world_(world), res_(res), access_(access), system_(system) {}
 
   std::size_t size() const { return world_.size(); }
+  std::uint64_t structure_version() const { return world_.structure_version(); }
 
   template <class Kind>
   std::span<const element_t<Kind, D>> read(Component<Kind> c) const {

@@ -24,6 +24,9 @@ class World {
   }
 
   std::size_t size() const { return size_; }
+  // Counts structural changes (append, erase, permute): whoever keeps particle indices between
+  // steps (a Verlet neighbour list) knows they are stale when it moved.
+  std::uint64_t structure_version() const { return structure_version_; }
   bool has(std::string_view name) const { return columns_.count(std::string(name)) != 0; }
   std::vector<std::string> column_names() const {
     std::vector<std::string> names;
@@ -61,6 +64,7 @@ class World {
   std::size_t append(std::size_t n, std::int32_t kind) {
     std::size_t first = size_;
     size_ += n;
+    ++structure_version_;
     for (auto& [_, col] : columns_) col->resize(size_);
     auto& ids = column(components::id);
     auto& kinds = column(components::kind);
@@ -75,6 +79,7 @@ class World {
   // Ids travel with their particles, so they stay stable.
   void permute(std::span<const std::uint32_t> new_to_old) {
     if (new_to_old.size() != size_) throw std::logic_error("permute: wrong length");
+    ++structure_version_;
     for (auto& [_, col] : columns_) col->gather(new_to_old);
   }
 
@@ -88,6 +93,7 @@ class World {
       if (!dead[i]) keep.push_back(i);
     for (auto& [_, col] : columns_) col->gather(keep);
     size_ = keep.size();
+    ++structure_version_;
   }
 
   std::size_t bytes_per_particle() const {
@@ -105,6 +111,7 @@ class World {
   }
 
   std::size_t size_ = 0;
+  std::uint64_t structure_version_ = 0;
   std::int32_t next_id_ = 0;
   std::map<std::string, std::unique_ptr<ColumnBase>> columns_;
 };

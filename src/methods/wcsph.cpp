@@ -59,7 +59,7 @@ void populate_world(const Scene& s, const WcsphParameters<D>& p, World<D>& world
 
 template <int D>
 std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D>& p) {
-  auto neighbours = std::make_shared<NeighbourSearch<D>>(p.kernel.support(), kWall);
+  auto neighbours = std::make_shared<NeighbourSearch<D>>(p.kernel.support(), kWall, s.neighbour_skin * s.spacing);
   auto wall = std::make_shared<AdamiWall<D>>(p);
   auto gradient = std::make_shared<RenormalisedDensityGradient<D>>(p);
   auto forces = std::make_shared<WcsphPairForces<D>>(p);

@@ -311,6 +311,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     val.fail(root["particles"]["kernel"].node(), "particles.kernel",
              "method 'mps' uses the MPS weight: kernel must be \"mps\" (or left out), not '" + sc.kernel + "'");
   sc.reorder_interval = static_cast<int>(*get("particles", "reorder_interval").value<long long>());
+  sc.neighbour_skin = *get("particles", "neighbour_skin").value<double>();
   sc.density = *get("material", "density").value<double>();
   sc.viscosity = *get("material", "viscosity").value<double>();
   sc.sound_speed = *get("material", "sound_speed").value<double>();

@@ -63,7 +63,9 @@ std::vector<SectionSpec> build() {
                 ranged({"smoothing_ratio", K::Float, "", "(1.5; method mps: 3.1 in 2D, 2.1 in 3D)", "Smoothing length h = smoothing_ratio * spacing; support radius 2h. 1.5 with Wendland C2 keeps the lattice first moment within 0.3% of the identity (1.3 gives 2.6%, which shows up as a 2.6% pressure error at rest). With the mps kernel h is the influence radius r_e (the BMG paper's 3.1 l0 / 2.1 l0)."}, 0.5, 4.0),
                 choice("kernel", "(wendland_c2; method mps: mps)", "Smoothing kernel (src/systems/kernels/kernel.hpp). Support radius: 2h, except quintic_spline 3h and mps h (h = r_e). Method mps needs the mps weight.", kernel_names()),
                 ranged({"reorder_interval", K::Integer, "steps", "25",
-                        "Reorder particles by cell every this many steps for cache locality (0: never). Ids are stable."}, 0, std::nullopt)}});
+                        "Reorder particles by cell every this many steps for cache locality (0: never). Ids are stable."}, 0, std::nullopt),
+                ranged({"neighbour_skin", K::Float, "spacings", "0.6",
+                        "Method wcsph: the neighbour list is a Verlet list holding pairs within the support plus this skin (in units of the spacing d) and is rebuilt only when a particle may have moved half the skin since the last build (or after a reordering); Each step the list is filtered to the pairs within the support, so the result is the same as with 0 (rebuilt every step); 0.6 was fastest at 255k particles moving at 3 m/s (docs/benchmarks.md). Methods mps and isph build their own skin into the search radius and rebuild every step."}, 0.0, 3.0)}});
   s.push_back({"material", false, false, "Fluid properties.",
                {positive("density", "kg/m^3", "1000.0", "Reference density rho0."),
                 non_negative("viscosity", "Pa s", "0.0",

@@ -6,10 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
-
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "ecs/component.hpp"
 #include "ecs/math.hpp"
@@ -39,7 +38,8 @@ double max_fluid_speed(std::span<const std::int32_t> kind, std::span<const Vec<D
 }
 
 // Particle volumes V_i = m_i / rho_i, the weights of the SPH sums (operators' ParticleView).
-inline void particle_volumes(std::span<const double> m, std::span<const double> rho, std::vector<double>& out) {
+inline void particle_volumes(std::span<const double> m, std::span<const double> rho,
+                             std::vector<double>& out) {
   out.resize(m.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.size(), 4096), [&](auto r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) out[i] = m[i] / rho[i];

@@ -39,9 +39,19 @@ class WcsphPairForces final : public System<D> {
     std::fill(mu.begin(), mu.end(), p_.mu);
   }
   void run(SystemContext<D>& ctx) override {
-    Columns c{ctx.read(components::position), ctx.read(components::velocity), ctx.read(components::density),
-              ctx.read(components::pressure), ctx.read(components::mass), ctx.read(components::kind),
-              {}, {}, {}, {}, {}, ctx.write(components::density_rate), ctx.write(components::acceleration)};
+    Columns c{ctx.read(components::position),
+              ctx.read(components::velocity),
+              ctx.read(components::density),
+              ctx.read(components::pressure),
+              ctx.read(components::mass),
+              ctx.read(components::kind),
+              {},
+              {},
+              {},
+              {},
+              {},
+              ctx.write(components::density_rate),
+              ctx.write(components::acceleration)};
     if (p_.delta > 0) c.grad = ctx.read(components::density_gradient);
     if (p_.mu > 0) {
       c.mu = ctx.read(components::viscosity);

@@ -14,13 +14,17 @@ struct NeighbourList {
   std::vector<std::uint32_t> offsets{0};
   std::vector<std::uint32_t> indices;
   double radius = 0;
+  std::size_t builds = 0;           // how many times it was built (a Verlet list is reused in between)
+  std::size_t candidate_bytes = 0;  // the Verlet candidates this list is filtered from, if any
 
   std::size_t size() const { return offsets.size() - 1; }
   std::uint32_t count(std::size_t i) const { return offsets[i + 1] - offsets[i]; }
   std::span<const std::uint32_t> of(std::size_t i) const {
     return {indices.data() + offsets[i], indices.data() + offsets[i + 1]};
   }
-  std::size_t bytes() const { return (offsets.size() + indices.size()) * sizeof(std::uint32_t); }
+  std::size_t bytes() const {
+    return (offsets.size() + indices.size()) * sizeof(std::uint32_t) + candidate_bytes;
+  }
 };
 
 inline constexpr Resource<NeighbourList> neighbours_resource{"neighbours"};

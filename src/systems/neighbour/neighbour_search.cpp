@@ -1,8 +1,10 @@
 #include "systems/neighbour/neighbour_search.hpp"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <type_traits>
 
 namespace ryushi {
 
@@ -103,8 +105,86 @@ void build_neighbour_list(const Domain<D>& domain, double radius, std::span<cons
     }
   });
   out.radius = radius;
+  ++out.builds;
 }
 
+template <int D>
+void filter_neighbour_list(const Domain<D>& domain, double radius, std::span<const Vec<D>> x,
+                           const NeighbourList& candidates, NeighbourList& out,
+                           std::vector<std::uint32_t>& scratch) {
+  const std::size_t N = candidates.size();
+  const double r2 = radius * radius;
+  const bool periodic = domain.any_periodic();
+  // One distance pass writes the survivors at the candidates' offsets (scratch), then a copy
+  // packs them: no second distance evaluation.
+  scratch.resize(candidates.indices.size());
+  std::vector<std::uint32_t> count(N);
+  auto pass = [&](auto periodic_axes) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, N, 2048), [&](auto r) {
+      for (std::size_t i = r.begin(); i != r.end(); ++i) {
+        const Vec<D> xi = x[i];
+        std::uint32_t* dst = scratch.data() + candidates.offsets[i];
+        std::uint32_t c = 0;
+        for (auto j : candidates.of(i)) {
+          Vec<D> d;
+          if constexpr (decltype(periodic_axes)::value)
+            d = domain.displacement(xi, x[j]);
+          else
+            d = xi - x[j];
+          dst[c] = j;
+          c += d.squaredNorm() <= r2;  // branch-free: which candidates survive is not predictable
+        }
+        count[i] = c;
+      }
+    });
+  };
+  if (periodic)
+    pass(std::true_type{});
+  else
+    pass(std::false_type{});
+  out.offsets.resize(N + 1);
+  out.offsets[0] = 0;
+  for (std::size_t i = 0; i < N; ++i) out.offsets[i + 1] = out.offsets[i] + count[i];
+  out.indices.resize(out.offsets[N]);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, N, 4096), [&](auto r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i)
+      std::copy_n(scratch.begin() + candidates.offsets[i], count[i], out.indices.begin() + out.offsets[i]);
+  });
+  out.radius = radius;
+}
+
+template <int D>
+std::pair<double, double> max_displacement_and_speed(const Domain<D>& domain, std::span<const Vec<D>> x,
+                                                     std::span<const Vec<D>> ref, std::span<const Vec<D>> v) {
+  using Pair = std::pair<double, double>;
+  const bool periodic = domain.any_periodic();
+  auto [d2, v2] = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, x.size(), 4096), Pair{0.0, 0.0},
+      [&](auto r, Pair m) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          // The minimum image: a particle wrapped across a periodic side has not moved far.
+          Vec<D> d = periodic ? domain.displacement(x[i], ref[i]) : Vec<D>(x[i] - ref[i]);
+          m.first = std::max(m.first, d.squaredNorm());
+          m.second = std::max(m.second, v[i].squaredNorm());
+        }
+        return m;
+      },
+      [](Pair a, Pair b) {
+        return Pair{std::max(a.first, b.first), std::max(a.second, b.second)};
+      });
+  return {std::sqrt(d2), std::sqrt(v2)};
+}
+
+template std::pair<double, double> max_displacement_and_speed<2>(const Domain<2>&, std::span<const Vec<2>>,
+                                                                 std::span<const Vec<2>>,
+                                                                 std::span<const Vec<2>>);
+template std::pair<double, double> max_displacement_and_speed<3>(const Domain<3>&, std::span<const Vec<3>>,
+                                                                 std::span<const Vec<3>>,
+                                                                 std::span<const Vec<3>>);
+template void filter_neighbour_list<2>(const Domain<2>&, double, std::span<const Vec<2>>,
+                                       const NeighbourList&, NeighbourList&, std::vector<std::uint32_t>&);
+template void filter_neighbour_list<3>(const Domain<3>&, double, std::span<const Vec<3>>,
+                                       const NeighbourList&, NeighbourList&, std::vector<std::uint32_t>&);
 template void build_neighbour_list<2>(const Domain<2>&, double, std::span<const Vec<2>>, CellGrid<2>&,
                                       NeighbourList&, std::span<const std::int32_t>, std::int32_t);
 template void build_neighbour_list<3>(const Domain<3>&, double, std::span<const Vec<3>>, CellGrid<3>&,

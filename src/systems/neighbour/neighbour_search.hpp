@@ -2,6 +2,8 @@
 // Neighbour search system: cell grid + counting sort, then a CSR list of all pairs within the
 // search radius. Reads positions; writes the `neighbours` and `cell_grid` resources.
 #include <span>
+#include <utility>
+#include <vector>
 
 #include "ecs/system.hpp"
 #include "systems/neighbour/cell_grid.hpp"
@@ -21,32 +23,84 @@ void build_neighbour_list(const Domain<D>& domain, double radius, std::span<cons
                           CellGrid<D>& grid, NeighbourList& out, std::span<const std::int32_t> kind = {},
                           std::int32_t skip_kind = -1);
 
+// `out` = the pairs of `candidates` (a list built with a larger radius) within `radius`, in the
+// same order: the same list that build_neighbour_list gives for `radius`, at a fraction of its
+// cost. `scratch` is working memory (as long as the candidates' indices).
+template <int D>
+void filter_neighbour_list(const Domain<D>& domain, double radius, std::span<const Vec<D>> x,
+                           const NeighbourList& candidates, NeighbourList& out,
+                           std::vector<std::uint32_t>& scratch);
+
+// Largest |x_i - ref_i| (minimum image on periodic axes) and largest |v_i| (the Verlet list's rebuild test).
+template <int D>
+std::pair<double, double> max_displacement_and_speed(const Domain<D>& domain, std::span<const Vec<D>> x,
+                                                     std::span<const Vec<D>> ref, std::span<const Vec<D>> v);
+
 template <int D>
 class NeighbourSearch final : public System<D> {
  public:
   // skip_kind: leave pairs of two particles of this kind out of the list (WCSPH never uses
   // wall-wall pairs, MPS never dummy-dummy pairs); -1 keeps every pair.
-  explicit NeighbourSearch(double radius, std::int32_t skip_kind = -1) : radius_(radius), skip_kind_(skip_kind) {}
+  // skin > 0 keeps a Verlet list of candidates: pairs within radius + skin, kept over the
+  // following steps until a pair left out might have come within `radius`. Two particles farther
+  // apart than radius + skin at the build each move at most delta, so they stay beyond `radius`
+  // while delta <= skin / 2. The test before each step bounds delta by the largest displacement
+  // since the build plus v_max dt (the predictor moves by dt/2 v: a factor two to spare). Any
+  // structural change (reordering, removal, insertion) rebuilds. Each step the candidates are
+  // filtered into the exact list within `radius`: the systems see the same list, in the same
+  // order, as without a skin (measured: a skin seen by the pair loops costs them more than the
+  // filter, since every candidate beyond the support is still gathered).
+  explicit NeighbourSearch(double radius, std::int32_t skip_kind = -1, double skin = 0)
+      : radius_(radius), skip_kind_(skip_kind), skin_(skin) {}
   std::string name() const override { return "neighbour_search"; }
   Access access() const override {
-    return Access{}
-        .read(components::position, components::kind, domain_resource<D>)
+    Access a;
+    a.read(components::position, components::kind, domain_resource<D>)
         .write(neighbours_resource, cell_grid_resource<D>);
+    if (skin_ > 0) a.read(components::velocity, resources::dt);
+    return a;
   }
   void initialise(World<D>&, Resources& res) override {
     res.ensure(neighbours_resource);
     res.ensure(cell_grid_resource<D>);
   }
   void run(SystemContext<D>& ctx) override {
+    auto x = ctx.read(components::position);
+    const auto& domain = ctx.read(domain_resource<D>);
+    auto& out = ctx.write(neighbours_resource);
     std::span<const std::int32_t> kind;
     if (skip_kind_ >= 0) kind = ctx.read(components::kind);
-    build_neighbour_list<D>(ctx.read(domain_resource<D>), radius_, ctx.read(components::position),
-                            ctx.write(cell_grid_resource<D>), ctx.write(neighbours_resource), kind, skip_kind_);
+    if (skin_ <= 0) {
+      build_neighbour_list<D>(domain, radius_, x, ctx.write(cell_grid_resource<D>), out, kind, skip_kind_);
+      return;
+    }
+    bool valid =
+        candidates_.builds > 0 && ctx.structure_version() == version_ && x.size() == reference_.size();
+    if (valid) {
+      auto [moved, vmax] =
+          max_displacement_and_speed<D>(domain, x, reference_, ctx.read(components::velocity));
+      valid = moved + vmax * ctx.read(resources::dt) <= 0.5 * skin_;
+    }
+    if (!valid) {
+      build_neighbour_list<D>(domain, radius_ + skin_, x, ctx.write(cell_grid_resource<D>), candidates_, kind,
+                              skip_kind_);
+      reference_.assign(x.begin(), x.end());
+      version_ = ctx.structure_version();
+    }
+    filter_neighbour_list<D>(domain, radius_, x, candidates_, out, scratch_);
+    out.builds = candidates_.builds;
+    out.candidate_bytes =
+        candidates_.bytes() + scratch_.size() * sizeof(std::uint32_t) + reference_.size() * sizeof(Vec<D>);
   }
 
  private:
   double radius_;
   std::int32_t skip_kind_;
+  double skin_;
+  NeighbourList candidates_;
+  std::vector<std::uint32_t> scratch_;
+  std::uint64_t version_ = 0;
+  std::vector<Vec<D>> reference_;
 };
 
 }  // namespace ryushi
