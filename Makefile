@@ -59,6 +59,7 @@ test-sanitize: deps
 bench: build py-deps
 	$(BUILD)/bench/ryushi_bench_neighbours
 	tools/bench_dam_break.sh $(BUILD)
+	tools/bench_speedup.sh $(BUILD)
 	tools/bench_isph.sh $(BUILD) 10
 	mkdir -p docs/img
 	$(BUILD)/bench/ryushi_bench_solvers 2

@@ -29,3 +29,5 @@ set_tests_properties("isph: 3D dam break runs through the impact, meets the fron
                      PROPERTIES LABELS slow COST 13)
 set_tests_properties("energy: an ISPH sloshing tank with the violent-flow set-up never gains energy and keeps the period"
                      PROPERTIES LABELS slow COST 18)
+set_tests_properties("validation: the WCSPH dam break is the same with and without a Verlet skin"
+                     PROPERTIES LABELS slow COST 25)
