@@ -8,7 +8,9 @@
 // tolerance is 1e-12 of the size of the largest term of each sum (sum of |terms| would be
 // tighter; this is the simplest bound that is still 1e4 above the expected ~1e-16 x 30).
 // A neighbour list with a skin (pairs beyond the support) must give the same result: the pass
-// skips them, the references see zero kernel gradients there.
+// skips them, the references see zero kernel gradients there. Both variants of the pass are
+// checked: one-sided (each particle gathers all its pairs) and each pair once (from the lower
+// index, both sides accumulated; the sums come in another order, still round-off).
 #include "systems/fluid/wcsph_pair_forces.hpp"
 
 #include <doctest/doctest.h>
@@ -59,7 +61,7 @@ void run_system(System<D>& s, World<D>& w, Resources& res) {
 }
 
 template <int D>
-void check_fused_matches_reference(bool no_slip, double skin) {
+void check_fused_matches_reference(bool no_slip, double skin, bool pairs_once) {
   const double d = 0.01;
   const int n = D == 2 ? 20 : 8, layers = 3;
   std::mt19937 rng(7 + D + (no_slip ? 1 : 0));
@@ -114,6 +116,7 @@ void check_fused_matches_reference(bool no_slip, double skin) {
   Momentum<D> momentum(p);
   LaminarViscosityMorris<D> viscosity(p);
   WcsphPairForces<D> fused(p);
+  fused.set_pairs_once(pairs_once ? PairsOnce::Always : PairsOnce::Never);
   // The viscosity systems' initialise() fills a uniform mu; keep the random one.
   run_system<D>(continuity, w, res);
   run_system<D>(momentum, w, res);
@@ -138,18 +141,22 @@ void check_fused_matches_reference(bool no_slip, double skin) {
   REQUIRE(fluid == std::size_t(std::pow(n, D)));
   REQUIRE(scale_drho > 0);
   REQUIRE(scale_a > 0);
-  INFO("D = " << D << ", no-slip " << no_slip << ", skin " << skin << ": |drho| max " << scale_drho
-              << ", err " << err_drho << "; |a - g| max " << scale_a << ", err " << err_a);
+  INFO("D = " << D << ", no-slip " << no_slip << ", skin " << skin << ", pairs once " << pairs_once
+              << ": |drho| max " << scale_drho << ", err " << err_drho << "; |a - g| max " << scale_a
+              << ", err " << err_a);
   CHECK(err_drho <= 1e-12 * scale_drho);
   CHECK(err_a <= 1e-12 * scale_a);
 }
 
 }  // namespace
 
-TEST_CASE("wcsph pair forces: the fused pass equals continuity + momentum + viscosity to round-off") {
-  for (bool no_slip : {true, false})
-    for (double skin : {0.0, 0.004}) {
-      check_fused_matches_reference<2>(no_slip, skin);
-      check_fused_matches_reference<3>(no_slip, skin);
-    }
+TEST_CASE(
+    "wcsph pair forces: the fused pass equals continuity + momentum + viscosity to round-off, each pair once "
+    "too") {
+  for (bool pairs_once : {false, true})
+    for (bool no_slip : {true, false})
+      for (double skin : {0.0, 0.004}) {
+        check_fused_matches_reference<2>(no_slip, skin, pairs_once);
+        check_fused_matches_reference<3>(no_slip, skin, pairs_once);
+      }
 }

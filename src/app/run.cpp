@@ -233,7 +233,10 @@ class Runner {
 
  private:
   void advance() {
-    if (scene_.reorder_interval > 0 && step_ > 0 && step_ % scene_.reorder_interval == 0) {
+    // Also after the first step: the scene's blocks come in lattice order, walls after the fluid,
+    // so a wall and the fluid beside it sit a whole block apart in index until the first reorder
+    // (which keeps WCSPH's each-pair-once pass from running in parallel blocks).
+    if (scene_.reorder_interval > 0 && step_ > 0 && (step_ == 1 || step_ % scene_.reorder_interval == 0)) {
       Profiler::Scope t(profiler_, slot_reorder_);
       auto order = res_.get(cell_grid_resource<D>).sorted();
       if (order.size() == world_.size()) {
