@@ -105,12 +105,31 @@ class WcsphPairForces final : public System<D> {
       f(std::false_type{});
   }
 
+  template <bool Periodic>
+  Vec<D> displacement(const Vec<D>& xi, const Vec<D>& xj) const {
+    if constexpr (Periodic)
+      return p_.domain.displacement(xi, xj);
+    else
+      return xi - xj;
+  }
+
+  // (p_i + p_j)/(rho_i rho_j) + Pi_ij: Monaghan's viscosity for approaching pairs (v_ij.x_ij < 0),
+  // mu_ij = h v_ij.x_ij / (r^2 + 0.01 h^2). Symmetric in (i, j).
+  double pressure_coefficient(double pi, double pj, double rhoi, double rhoj, double inv_rho_ij, double vx,
+                              double inv_r2_eta2) const {
+    double coeff = (pi + pj) * inv_rho_ij;
+    if (vx < 0) {
+      const double mu = p_.kernel.h() * vx * inv_r2_eta2;
+      coeff += (-p_.alpha * p_.c0 * mu + p_.beta * mu * mu) / (0.5 * (rhoi + rhoj));
+    }
+    return coeff;
+  }
+
   template <bool Periodic, bool Diffusion, bool Viscous>
   void pass(const Columns& c, const NeighbourList& nl) const {
     const double support2 = p_.kernel.support() * p_.kernel.support();
     const double h = p_.kernel.h(), eta2 = 0.01 * h * h;
     const double diffusion = p_.delta * h * p_.c0;
-    const double alpha_c0 = p_.alpha * p_.c0, beta = p_.beta;
     const bool no_slip = p_.wall_no_slip;
     for_each_of_kind(c.kind, kFluid, [&](std::size_t i) {
       const Vec<D> xi = c.x[i], vi = c.v[i];
@@ -122,11 +141,7 @@ class WcsphPairForces final : public System<D> {
       double divergence = 0, diffusive = 0;
       Vec<D> acc = Vec<D>::Zero(), acc_visc = Vec<D>::Zero();
       for (auto j : nl.of(i)) {
-        Vec<D> xij;
-        if constexpr (Periodic)
-          xij = p_.domain.displacement(xi, c.x[j]);
-        else
-          xij = xi - c.x[j];
+        const Vec<D> xij = displacement<Periodic>(xi, c.x[j]);
         const double r2 = xij.squaredNorm();
         if (r2 >= support2) continue;
         const double F = p_.kernel.grad_factor(std::sqrt(r2));
@@ -142,11 +157,8 @@ class WcsphPairForces final : public System<D> {
         // part of a pair: 1/rho comes per particle and 1/(r^2 + eta^2) is shared.
         const double inv_rho_ij = inv_rhoi * c.inv_rho[j];
         const double inv_r2_eta2 = 1.0 / (r2 + eta2);
-        double coeff = (pi + c.p[j]) * inv_rho_ij;
-        // Branch-free: about half the pairs approach, a branch on it mispredicts (mu = 0 and
-        // the term vanishes for receding pairs).
-        const double mu = h * std::min(vij.dot(xij), 0.0) * inv_r2_eta2;
-        coeff += (-alpha_c0 * mu + beta * mu * mu) / (0.5 * (rhoi + rhoj));
+        const double coeff =
+            pressure_coefficient(pi, c.p[j], rhoi, rhoj, inv_rho_ij, vij.dot(xij), inv_r2_eta2);
         acc -= c.m[j] * coeff * gradW;
         // Laminar viscosity; walls use their ghost velocity (no-slip) or are left out (slip).
         if constexpr (Viscous) {
@@ -182,7 +194,6 @@ class WcsphPairForces final : public System<D> {
     });
     const double support2 = p_.kernel.support() * p_.kernel.support();
     const double h = p_.kernel.h(), eta2 = 0.01 * h * h;
-    const double alpha_c0 = p_.alpha * p_.c0, beta = p_.beta;
     const bool no_slip = p_.wall_no_slip;
     auto particles = [&](std::size_t lo, std::size_t hi) {
       for (std::size_t i = lo; i < hi; ++i) {
@@ -198,11 +209,7 @@ class WcsphPairForces final : public System<D> {
         for (const std::uint32_t j : neighbours_above(nl, i)) {
           const bool fluid_j = c.kind[j] == kFluid;
           if (!fluid_i && !fluid_j) continue;
-          Vec<D> xij;
-          if constexpr (Periodic)
-            xij = p_.domain.displacement(xi, c.x[j]);
-          else
-            xij = xi - c.x[j];
+          const Vec<D> xij = displacement<Periodic>(xi, c.x[j]);
           const double r2 = xij.squaredNorm();
           if (r2 >= support2) continue;
           const double F = p_.kernel.grad_factor(std::sqrt(r2));
@@ -213,12 +220,8 @@ class WcsphPairForces final : public System<D> {
           const double t = vij.dot(gradW);
           const double inv_rho_ij = inv_rhoi * c.inv_rho[j];
           const double inv_r2_eta2 = 1.0 / (r2 + eta2);
-          double coeff = (pi + c.p[j]) * inv_rho_ij;
-          const double vx = vij.dot(xij);
-          if (vx < 0) {
-            const double mu = h * vx * inv_r2_eta2;
-            coeff += (-alpha_c0 * mu + beta * mu * mu) / (0.5 * (rhoi + rhoj));
-          }
+          const double coeff =
+              pressure_coefficient(pi, c.p[j], rhoi, rhoj, inv_rho_ij, vij.dot(xij), inv_r2_eta2);
           if (fluid_i) {
             div_i += Vj * t;
             acc_i -= mj * coeff * gradW;
