@@ -57,6 +57,7 @@ test-sanitize: deps
 	cd build-sanitize && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j$(JOBS)
 
 bench: build py-deps
+	$(BUILD)/bench/ryushi_bench_triad
 	$(BUILD)/bench/ryushi_bench_neighbours
 	tools/bench_dam_break.sh $(BUILD)
 	tools/bench_speedup.sh $(BUILD)
