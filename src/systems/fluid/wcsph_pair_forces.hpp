@@ -125,11 +125,20 @@ class WcsphPairForces final : public System<D> {
     return coeff;
   }
 
+  // The particle's rates from its pair sums, the same for both variants: the same sums in the
+  // same order as the separate systems, a = (pressure + g) + viscous.
+  template <bool Viscous>
+  void store(const Columns& c, std::size_t i, double divergence, double diffusive, const Vec<D>& acc,
+             const Vec<D>& acc_visc) const {
+    c.drho[i] = c.rho[i] * divergence + p_.delta * p_.kernel.h() * p_.c0 * diffusive;
+    c.a[i] = acc + p_.gravity;
+    if constexpr (Viscous) c.a[i] += acc_visc;
+  }
+
   template <bool Periodic, bool Diffusion, bool Viscous>
   void pass(const Columns& c, const NeighbourList& nl) const {
     const double support2 = p_.kernel.support() * p_.kernel.support();
     const double h = p_.kernel.h(), eta2 = 0.01 * h * h;
-    const double diffusion = p_.delta * h * p_.c0;
     const bool no_slip = p_.wall_no_slip;
     for_each_of_kind(c.kind, kFluid, [&](std::size_t i) {
       const Vec<D> xi = c.x[i], vi = c.v[i];
@@ -169,10 +178,7 @@ class WcsphPairForces final : public System<D> {
           }
         }
       }
-      c.drho[i] = rhoi * divergence + diffusion * diffusive;
-      // The same sums in the same order as the separate systems: a = (pressure + g) + viscous.
-      c.a[i] = acc + p_.gravity;
-      if constexpr (Viscous) c.a[i] += acc_visc;
+      store<Viscous>(c, i, divergence, diffusive, acc, acc_visc);
     });
   }
 
@@ -260,12 +266,8 @@ class WcsphPairForces final : public System<D> {
       }
     };
     for_each_block_in_two_phases(N, block, particles);
-    const double diffusion = p_.delta * h * p_.c0;
-    for_each_of_kind(c.kind, kFluid, [&](std::size_t i) {
-      c.drho[i] = c.rho[i] * div_[i] + diffusion * dif_[i];
-      c.a[i] = acc_[i] + p_.gravity;
-      if constexpr (Viscous) c.a[i] += visc_[i];
-    });
+    for_each_of_kind(c.kind, kFluid,
+                     [&](std::size_t i) { store<Viscous>(c, i, div_[i], dif_[i], acc_[i], visc_[i]); });
   }
 
   WcsphParameters<D> p_;
