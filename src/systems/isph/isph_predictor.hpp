@@ -15,6 +15,7 @@
 #include "systems/isph/isph_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/operators/gradient.hpp"
+#include "systems/operators/laplacian_choice.hpp"
 
 namespace ryushi {
 
@@ -45,10 +46,12 @@ class IsphPredictor final : public System<D> {
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       thread_local std::vector<double> w;
       thread_local std::vector<Vec<D>> g;
+      thread_local Stencil<D> stencil;
       Vec<D> acc = p_.gravity;
       auto nb = nl.of(i);
+      if (p_.nu > 0 || eulerian) stencil.gather(view, i);
       if (p_.nu > 0) {
-        laplacian_weights(p_.viscous_laplacian, view, i, w);
+        laplacian_weights(p_.viscous_laplacian, stencil, w);
         Vec<D> lap = Vec<D>::Zero();
         for (std::size_t k = 0; k < nb.size(); ++k) {
           std::size_t j = nb[k];
@@ -58,7 +61,7 @@ class IsphPredictor final : public System<D> {
         acc += p_.nu * lap;
       }
       if (eulerian) {
-        gradient_weights_corrected(view, i, g);
+        gradient_weights_corrected(stencil, g);
         Vec<D> convective = Vec<D>::Zero();
         for (std::size_t k = 0; k < nb.size(); ++k) convective += v[i].dot(g[k]) * (v[nb[k]] - v[i]);
         acc -= convective;

@@ -36,6 +36,7 @@
 #include "systems/isph/isph_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/operators/gradient.hpp"
+#include "systems/operators/laplacian_choice.hpp"
 #include "systems/pressure/pressure_gauge.hpp"
 #include "systems/pressure/pressure_system.hpp"
 #include "systems/shifting/density_shifting.hpp"  // shifting_beta
@@ -149,15 +150,17 @@ class IsphPressureEquation final : public System<D> {
       std::vector<double> w;
       std::vector<Vec<D>> g;
       std::vector<std::pair<std::uint32_t, double>> entries;
+      Stencil<D> stencil;  // the row particle's neighbourhood, gathered once for all its operators
       std::size_t bad_row = kNoRow;
       for (std::size_t r = range.begin(); r != range.end(); ++r) {
         const std::size_t i = sys.particle_of_row[r];
         auto nb = nl.of(i);
         entries.clear();
+        if (kind[i] == kFluid || !p_.wall_shepard) stencil.gather(view, i);
         double diagonal = 0, rhs = 0, from_known = 0;
         if (kind[i] == kFluid && surface[i]) {
           // p_i + d/2 N . sum_k g_k (p_k - p_i) = 0, times 1/d^2.
-          gradient_weights_corrected(view, i, g);
+          gradient_weights_corrected(stencil, g);
           diagonal = 1.0 / (d * d);
           for (std::size_t k = 0; k < nb.size(); ++k) {
             const double along = 0.5 * surface_normal[i].dot(g[k]) / d;
@@ -167,26 +170,26 @@ class IsphPressureEquation final : public System<D> {
           }
           rhs = 0;
         } else if (kind[i] == kFluid) {
-          laplacian_weights(p_.ppe_laplacian, view, i, w);
+          laplacian_weights(p_.ppe_laplacian, stencil, w);
           // The corrected and SPH(2) weights are not all positive: on a distorted support their
           // sum (the diagonal) can vanish or turn negative, and the row would make the matrix
           // singular. That row takes the standard (Morris) weights.
           double sum = 0;
           for (double wk : w) sum += wk;
-          if (!(sum > 0)) laplacian_weights_standard(view, i, w);
+          if (!(sum > 0)) laplacian_weights_standard(stencil, w);
           for (std::size_t k = 0; k < nb.size(); ++k) {
             diagonal += w[k];
             if (row_of_[nb[k]] != kNoRow && w[k] != 0) entries.emplace_back(row_of_[nb[k]], -w[k]);
             else from_known += w[k] * known(nb[k]);
           }
-          const bool corrected = moment_matrix(view, i).determinant() >= p_.uncorrected_divergence_det;
+          const bool corrected = moment_matrix(stencil).determinant() >= p_.uncorrected_divergence_det;
           double div = 0;
           if (corrected) {
-            gradient_weights_corrected(view, i, g);
+            gradient_weights_corrected(stencil, g);
             for (std::size_t k = 0; k < nb.size(); ++k) div += g[k].dot(v_star_[nb[k]] - v[i]);
           } else {
             for (std::size_t k = 0; k < nb.size(); ++k)
-              div += volume_[nb[k]] * view.grad_w(view.r(i, nb[k])).dot(v_star_[nb[k]] - v[i]);
+              div += stencil.volume[k] * stencil.grad_w(k).dot(v_star_[nb[k]] - v[i]);
           }
           rhs = -p_.rho0 / dt * div;
           if (p_.compression_relaxation > 0) {
@@ -196,10 +199,8 @@ class IsphPressureEquation final : public System<D> {
             // distance 0.85 d) until the surge was a cloud of surface particles. Both ways, the
             // deficit of a disordered support (not an expansion) held a 0.2 m pool at -6 kPa.
             double sum = p_.kernel.w(0.0);
-            for (auto j : nb) {
-              const double len = view.r(i, j).norm();
+            for (double len : stencil.len)
               if (len <= shell) sum += p_.kernel.w(len);
-            }
             const double excess = std::max(beta_ * std::pow(d, D) * sum - 1.0, 0.0);
             // Over the scene's reference step, not the step's own: with 1/dt^2 a particle
             // pressed against a wall in an impact got a pressure that grew as the step shrank,
@@ -229,7 +230,7 @@ class IsphPressureEquation final : public System<D> {
             }
           rhs = p_.rho0 / dt * (v_star_[i] - v[i]).dot(normal[i]) * lever / (h * h);
         } else {
-          gradient_weights_corrected(view, i, g);
+          gradient_weights_corrected(stencil, g);
           for (std::size_t k = 0; k < nb.size(); ++k) {
             const std::size_t j = nb[k];
             const double along = normal[i].dot(g[k]) / h;

@@ -10,6 +10,7 @@
 // grad_factor(r) = (dW/dr)/r, so that grad_i W_ij = (x_i - x_j) * grad_factor(r_ij); finite at
 // r = 0 for every kernel except spiky (a cusp: dW/dr != 0 at r = 0) and mps (singular weight),
 // both by design of those kernels.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -94,10 +95,12 @@ class Kernel {
     const double s = sigma_ * inv_h_ * inv_h_;  // dW/dr / r = s * (df/dq) / q
     switch (type_) {
       case KernelType::CubicSpline: {
-        if (q >= 2.0) return 0.0;
-        if (q < 1.0) return s * (-3.0 + 2.25 * q);
-        const double t = 2.0 - q;
-        return -s * 0.75 * t * t / q;
+        // Both pieces, then a select: whether a neighbour lies inside q = 1 is a coin toss, and
+        // the branch mispredicted often enough to be a third of the ISPH stencil's gather.
+        const double t = std::max(2.0 - q, 0.0);
+        const double inner = s * (-3.0 + 2.25 * q);
+        const double outer = -s * 0.75 * t * t / std::max(q, 1.0);
+        return q < 1.0 ? inner : outer;
       }
       case KernelType::QuinticSpline: {
         if (q >= 3.0) return 0.0;

@@ -53,11 +53,19 @@ Vec<D> gradient_mps(const ParticleView<D>& v, std::span<const double> f, std::si
 // The corrected gradient as weights: grad_i = sum_k g_k (f_k - f_i), g_k = V_k L_i gW_ik (k over
 // neighbours.of(i) in order), for assembling rows that hold a gradient (Neumann walls).
 template <int D>
+void gradient_weights_corrected(const Stencil<D>& s, const Mat<D>& L, std::vector<Vec<D>>& g) {
+  g.resize(s.size());
+  for (std::size_t k = 0; k < s.size(); ++k) g[k] = s.volume[k] * (L * s.grad_w(k));
+}
+
+template <int D>
+void gradient_weights_corrected(const Stencil<D>& s, std::vector<Vec<D>>& g) {
+  gradient_weights_corrected(s, renormalisation(s), g);
+}
+
+template <int D>
 void gradient_weights_corrected(const ParticleView<D>& v, std::size_t i, std::vector<Vec<D>>& g) {
-  const Mat<D> L = renormalisation(v, i);
-  auto nb = v.neighbours.of(i);
-  g.resize(nb.size());
-  for (std::size_t k = 0; k < nb.size(); ++k) g[k] = v.volume[nb[k]] * (L * v.grad_w(v.r(i, nb[k])));
+  gradient_weights_corrected(gathered_stencil(v, i), g);
 }
 
 }  // namespace ryushi

@@ -31,13 +31,13 @@ namespace ryushi {
 // Y_p = L_i sum_k V_k gW_k r_k,a r_k,b over the symmetric pairs p = (a, b): the corrected
 // gradient's response to the quadratic monomials, shared by the corrected and SPH(2) weights.
 template <int D>
-std::array<Vec<D>, kSymmetricCount<D>> corrected_quadratic_moments(const ParticleView<D>& v, std::size_t i,
-                                                                   const Mat<D>& L) {
+std::array<Vec<D>, kSymmetricCount<D>> corrected_quadratic_moments(const Stencil<D>& s, const Mat<D>& L) {
   constexpr auto pairs = symmetric_pairs<D>();
   std::array<Vec<D>, kSymmetricCount<D>> Y;
   Y.fill(Vec<D>::Zero());
-  for (auto j : v.neighbours.of(i)) {
-    Vec<D> r = v.r(i, j), gw = v.volume[j] * v.grad_w(r);
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const Vec<D>& r = s.r[k];
+    const Vec<D> gw = s.volume[k] * s.grad_w(k);
     for (int p = 0; p < kSymmetricCount<D>; ++p) Y[p] += gw * r[pairs[p].first] * r[pairs[p].second];
   }
   for (auto& y : Y) y = L * y;
@@ -45,15 +45,24 @@ std::array<Vec<D>, kSymmetricCount<D>> corrected_quadratic_moments(const Particl
 }
 
 template <int D>
-void laplacian_weights_standard(const ParticleView<D>& v, std::size_t i, std::vector<double>& w) {
-  const double eta2 = 0.01 * v.kernel.h() * v.kernel.h();
-  auto nb = v.neighbours.of(i);
-  w.resize(nb.size());
-  for (std::size_t k = 0; k < nb.size(); ++k) {
-    Vec<D> r = v.r(i, nb[k]);
-    double r2 = r.squaredNorm();
-    w[k] = v.volume[nb[k]] * (-2.0 * v.kernel.grad_factor(std::sqrt(r2)) * r2 / (r2 + eta2));
+std::array<Vec<D>, kSymmetricCount<D>> corrected_quadratic_moments(const ParticleView<D>& v, std::size_t i,
+                                                                   const Mat<D>& L) {
+  return corrected_quadratic_moments(gathered_stencil(v, i), L);
+}
+
+template <int D>
+void laplacian_weights_standard(const Stencil<D>& s, std::vector<double>& w) {
+  const double eta2 = 0.01 * s.h * s.h;
+  w.resize(s.size());
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const double r2 = s.len[k] * s.len[k];
+    w[k] = s.volume[k] * (-2.0 * s.factor[k] * r2 / (r2 + eta2));
   }
+}
+
+template <int D>
+void laplacian_weights_standard(const ParticleView<D>& v, std::size_t i, std::vector<double>& w) {
+  laplacian_weights_standard(gathered_stencil(v, i), w);
 }
 
 // Corrected (Fatehi-Manzari) weights: with c_j = B_i : e_j (x) gW_j and the corrected gradient
@@ -62,17 +71,16 @@ void laplacian_weights_standard(const ParticleView<D>& v, std::size_t i, std::ve
 // so w_k = 2 V_k c_k/|r_k| - V_k E . L_i gW_k (the ISPH paper's A*_ij, eq. 12). Where L_i or the
 // B_i system is singular the standard weights are used; returns false then.
 template <int D>
-bool laplacian_weights_corrected(const ParticleView<D>& v, std::size_t i, std::vector<double>& w) {
+bool laplacian_weights_corrected(const Stencil<D>& s, std::vector<double>& w) {
   constexpr int K = kSymmetricCount<D>;
   constexpr auto pairs = symmetric_pairs<D>();
   bool corrected = false;
-  const Mat<D> L = renormalisation(v, i, &corrected);
+  const Mat<D> L = renormalisation(s, &corrected);
   if (!corrected) {
-    laplacian_weights_standard(v, i, w);
+    laplacian_weights_standard(s, w);
     return false;
   }
-  auto nb = v.neighbours.of(i);
-  const auto Y = corrected_quadratic_moments(v, i, L);
+  const auto Y = corrected_quadratic_moments(s, L);
   // K beta = delta, beta = B's independent entries; u_j holds e (x) gW with off-diagonals doubled.
   Eigen::Matrix<double, K, K> Kmat = Eigen::Matrix<double, K, K>::Zero();
   Eigen::Matrix<double, K, 1> delta = Eigen::Matrix<double, K, 1>::Zero();
@@ -85,33 +93,44 @@ bool laplacian_weights_corrected(const ParticleView<D>& v, std::size_t i, std::v
     }
     return u;
   };
-  for (auto j : nb) {
-    Vec<D> r = v.r(i, j), gw = v.grad_w(r);
-    double len = r.norm();
-    Vec<D> e = r / len;
-    Eigen::Matrix<double, K, 1> wv;
-    for (int p = 0; p < K; ++p) wv[p] = len * e[pairs[p].first] * e[pairs[p].second] - e.dot(Y[p]);
-    Kmat += v.volume[j] * wv * u_of(e, gw).transpose();
+  // Plain arrays for the outer products: Eigen's K x K update through the stack stalled on
+  // store forwarding (60% of this function's time in two instructions).
+  double km[K][K] = {};
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const double len = s.len[k];
+    const Vec<D> e = s.r[k] / len;
+    const Eigen::Matrix<double, K, 1> u = u_of(e, s.grad_w(k));
+    double wv[K];
+    for (int p = 0; p < K; ++p)
+      wv[p] = s.volume[k] * (len * e[pairs[p].first] * e[pairs[p].second] - e.dot(Y[p]));
+    for (int p = 0; p < K; ++p)
+      for (int q = 0; q < K; ++q) km[p][q] += wv[p] * u[q];
   }
+  for (int p = 0; p < K; ++p)
+    for (int q = 0; q < K; ++q) Kmat(p, q) = km[p][q];
   Eigen::FullPivLU<Eigen::Matrix<double, K, K>> lu(Kmat);
   if (!lu.isInvertible()) {
-    laplacian_weights_standard(v, i, w);
+    laplacian_weights_standard(s, w);
     return false;
   }
   Eigen::Matrix<double, K, 1> beta = lu.solve(delta);
-  w.resize(nb.size());
+  w.resize(s.size());
   Vec<D> E = Vec<D>::Zero();
-  for (std::size_t k = 0; k < nb.size(); ++k) {
-    Vec<D> r = v.r(i, nb[k]), gw = v.grad_w(r);
-    double len = r.norm();
-    Vec<D> e = r / len;
-    double c = beta.dot(u_of(e, gw));
-    w[k] = 2.0 * v.volume[nb[k]] * c / len;
-    E += 2.0 * v.volume[nb[k]] * c * e;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const double len = s.len[k];
+    const Vec<D> e = s.r[k] / len;
+    double c = beta.dot(u_of(e, s.grad_w(k)));
+    w[k] = 2.0 * s.volume[k] * c / len;
+    E += 2.0 * s.volume[k] * c * e;
   }
   const Vec<D> LtE = L.transpose() * E;
-  for (std::size_t k = 0; k < nb.size(); ++k) w[k] -= v.volume[nb[k]] * LtE.dot(v.grad_w(v.r(i, nb[k])));
+  for (std::size_t k = 0; k < s.size(); ++k) w[k] -= s.volume[k] * LtE.dot(s.grad_w(k));
   return true;
+}
+
+template <int D>
+bool laplacian_weights_corrected(const ParticleView<D>& v, std::size_t i, std::vector<double>& w) {
+  return laplacian_weights_corrected(gathered_stencil(v, i), w);
 }
 
 // sum_k w_k (f_k - f_i) for weights aligned with neighbours.of(i).

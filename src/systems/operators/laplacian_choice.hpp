@@ -20,12 +20,24 @@ inline LaplacianOrder laplacian_order(const std::string& name) {
 }
 
 template <int D>
-void laplacian_weights(LaplacianOrder order, const ParticleView<D>& v, std::size_t i, std::vector<double>& w) {
+void laplacian_weights(LaplacianOrder order, const Stencil<D>& s, std::vector<double>& w) {
   switch (order) {
-    case LaplacianOrder::Standard: laplacian_weights_standard(v, i, w); break;
-    case LaplacianOrder::Corrected: laplacian_weights_corrected(v, i, w); break;
-    case LaplacianOrder::Sph2: laplacian_weights_sph2(v, i, w); break;
+    case LaplacianOrder::Standard:
+      laplacian_weights_standard(s, w);
+      break;
+    case LaplacianOrder::Corrected:
+      laplacian_weights_corrected(s, w);
+      break;
+    case LaplacianOrder::Sph2:
+      laplacian_weights_sph2(s, w);
+      break;
   }
+}
+
+template <int D>
+void laplacian_weights(LaplacianOrder order, const ParticleView<D>& v, std::size_t i,
+                       std::vector<double>& w) {
+  laplacian_weights(order, gathered_stencil(v, i), w);
 }
 
 }  // namespace ryushi

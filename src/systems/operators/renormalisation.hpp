@@ -7,29 +7,36 @@
 // surface, 0 for a single neighbour).
 #include <Eigen/LU>
 
-#include "systems/operators/particle_view.hpp"
+#include "systems/operators/stencil.hpp"
 
 namespace ryushi {
 
 inline constexpr double kMinRenormalisationDeterminant = 0.05;
 
 template <int D>
-Mat<D> moment_matrix(const ParticleView<D>& v, std::size_t i) {
+Mat<D> moment_matrix(const Stencil<D>& s) {
   Mat<D> M = Mat<D>::Zero();
-  for (auto j : v.neighbours.of(i)) {
-    Vec<D> r = v.r(i, j);
-    M += v.volume[j] * v.grad_w(r) * r.transpose();
-  }
+  for (std::size_t k = 0; k < s.size(); ++k) M -= (s.volume[k] * s.factor[k]) * s.r[k] * s.r[k].transpose();
   return M;
+}
+
+template <int D>
+Mat<D> moment_matrix(const ParticleView<D>& v, std::size_t i) {
+  return moment_matrix(gathered_stencil(v, i));
 }
 
 // L_i, or the identity where M_i is too close to singular (then `corrected` is false).
 template <int D>
-Mat<D> renormalisation(const ParticleView<D>& v, std::size_t i, bool* corrected = nullptr) {
-  Mat<D> M = moment_matrix(v, i);
+Mat<D> renormalisation(const Stencil<D>& s, bool* corrected = nullptr) {
+  Mat<D> M = moment_matrix(s);
   bool ok = M.determinant() > kMinRenormalisationDeterminant;
   if (corrected) *corrected = ok;
   return ok ? Mat<D>(M.inverse()) : Mat<D>::Identity();
+}
+
+template <int D>
+Mat<D> renormalisation(const ParticleView<D>& v, std::size_t i, bool* corrected = nullptr) {
+  return renormalisation(gathered_stencil(v, i), corrected);
 }
 
 }  // namespace ryushi

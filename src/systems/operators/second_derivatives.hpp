@@ -82,48 +82,54 @@ SecondOrderDerivatives<D> second_derivatives_sph2(const ParticleView<D>& v, std:
 //   c_j = 2 V_j F_ij (s . q_ij),  w_k = c_k - (sum_j c_j r_ij) . V_k L_i gW_k.
 // Falls back to the standard weights (returns false) where L_i or M_i is singular.
 template <int D>
-bool laplacian_weights_sph2(const ParticleView<D>& v, std::size_t i, std::vector<double>& w) {
+bool laplacian_weights_sph2(const Stencil<D>& s, std::vector<double>& w) {
   constexpr int K = kSymmetricCount<D>;
   constexpr auto pairs = symmetric_pairs<D>();
   bool corrected = false;
-  const Mat<D> L = renormalisation(v, i, &corrected);
+  const Mat<D> L = renormalisation(s, &corrected);
   if (!corrected) {
-    laplacian_weights_standard(v, i, w);
+    laplacian_weights_standard(s, w);
     return false;
   }
-  auto nb = v.neighbours.of(i);
-  const auto Q = corrected_quadratic_moments(v, i, L);
+  const auto Q = corrected_quadratic_moments(s, L);
   Eigen::Matrix<double, K, K> M = Eigen::Matrix<double, K, K>::Zero();
-  for (auto j : nb) {
-    Vec<D> r = v.r(i, j), gw = L * v.grad_w(r);
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const Vec<D>& r = s.r[k];
+    const Vec<D> gw = L * s.grad_w(k);
     double r2 = r.squaredNorm();
     Eigen::Matrix<double, K, 1> q, p;
-    for (int k = 0; k < K; ++k) {
-      q[k] = r[pairs[k].first] * r[pairs[k].second];
-      p[k] = q[k] - r.dot(Q[k]);
+    for (int m = 0; m < K; ++m) {
+      q[m] = r[pairs[m].first] * r[pairs[m].second];
+      p[m] = q[m] - r.dot(Q[m]);
     }
-    M += v.volume[j] * (r.dot(gw) / (r2 * r2)) * q * p.transpose();
+    M += s.volume[k] * (r.dot(gw) / (r2 * r2)) * q * p.transpose();
   }
   Eigen::FullPivLU<Eigen::Matrix<double, K, K>> lu(M.transpose());
   if (!lu.isInvertible()) {
-    laplacian_weights_standard(v, i, w);
+    laplacian_weights_standard(s, w);
     return false;
   }
   Eigen::Matrix<double, K, 1> t = Eigen::Matrix<double, K, 1>::Zero();
   for (int k = 0; k < D; ++k) t[k] = 1.0;  // the diagonal entries come first in symmetric_pairs
   Eigen::Matrix<double, K, 1> sv = lu.solve(t);
-  w.resize(nb.size());
+  w.resize(s.size());
   Vec<D> C = Vec<D>::Zero();
-  for (std::size_t k = 0; k < nb.size(); ++k) {
-    Vec<D> r = v.r(i, nb[k]), gw = L * v.grad_w(r);
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const Vec<D>& r = s.r[k];
+    const Vec<D> gw = L * s.grad_w(k);
     double r2 = r.squaredNorm();
     Eigen::Matrix<double, K, 1> q;
     for (int m = 0; m < K; ++m) q[m] = r[pairs[m].first] * r[pairs[m].second];
-    w[k] = 2.0 * v.volume[nb[k]] * (r.dot(gw) / (r2 * r2)) * sv.dot(q);
+    w[k] = 2.0 * s.volume[k] * (r.dot(gw) / (r2 * r2)) * sv.dot(q);
     C += w[k] * r;
   }
-  for (std::size_t k = 0; k < nb.size(); ++k) w[k] -= v.volume[nb[k]] * C.dot(L * v.grad_w(v.r(i, nb[k])));
+  for (std::size_t k = 0; k < s.size(); ++k) w[k] -= s.volume[k] * C.dot(L * s.grad_w(k));
   return true;
+}
+
+template <int D>
+bool laplacian_weights_sph2(const ParticleView<D>& v, std::size_t i, std::vector<double>& w) {
+  return laplacian_weights_sph2(gathered_stencil(v, i), w);
 }
 
 }  // namespace ryushi

@@ -69,28 +69,32 @@ class FickianShifting final : public System<D> {
     // Gather every shift and velocity change from the unshifted state first, then apply.
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       thread_local std::vector<Vec<D>> g;
+      const Stencil<D>& stencil = gathered_stencil(view, i);  // also for the velocity change below
       Vec<D> grad_c = Vec<D>::Zero();
-      auto add = [&](const Vec<D>& r, double volume) {
-        double len = r.norm();
+      auto add = [&](const Vec<D>& r, double len, double factor, double volume) {
         if (len >= p_.kernel.support() || len == 0) return;
         double ratio = p_.kernel.w(len) / w_spacing_;
-        grad_c += volume * (1 + p_.clumping * ratio * ratio * ratio * ratio) * view.grad_w(r);
+        grad_c -= volume * (1 + p_.clumping * ratio * ratio * ratio * ratio) * factor * r;  // gW = -F r
       };
-      for (auto j : nl.of(i)) {
-        Vec<D> r = view.r(i, j);
-        add(r, volume_[j]);
+      for (std::size_t k = 0; k < stencil.size(); ++k) {
+        add(stencil.r[k], stencil.len[k], stencil.factor[k], stencil.volume[k]);
         // One wall layer leaves the support short behind the wall: C falls towards it and -grad C
         // would push the fluid into the wall. The layers it lacks are completed on the fly, as
         // copies of the wall particle one and two spacings further out along its normal.
+        const std::size_t j = stencil.neighbours[k];
         if (complete_walls && kind[j] == kWall)
-          for (int layer = 1; layer <= 2; ++layer) add(r + layer * p_.spacing * wall_normal[j], volume_[j]);
+          for (int layer = 1; layer <= 2; ++layer) {
+            const Vec<D> r = stencil.r[k] + layer * p_.spacing * wall_normal[j];
+            const double len = r.norm();
+            add(r, len, p_.kernel.grad_factor(len), stencil.volume[k]);
+          }
       }
       Vec<D> dr = -p_.coefficient * h * v[i].norm() * dt * grad_c;
       if (surface[i]) dr -= dr.dot(normal[i]) * normal[i];
       double len = dr.norm();
       if (len > cap) dr *= cap / len;
       shift[i] = dr;
-      dv_[i] = shifted_velocity_change(view, std::span<const Vec<D>>(v.data(), v.size()), i, dr, g);
+      dv_[i] = shifted_velocity_change(stencil, std::span<const Vec<D>>(v.data(), v.size()), dr, g);
     });
     apply_shifts<D>(kind, p_.domain, shift, dv_, x, v);
   }

@@ -13,17 +13,25 @@ namespace ryushi {
 inline constexpr double kCarryDeterminant = 0.6;  // the I-SPH(2) free-surface threshold
 
 template <int D>
-Vec<D> shifted_velocity_change(const ParticleView<D>& view, std::span<const Vec<D>> v, std::size_t i,
-                               const Vec<D>& dr, std::vector<Vec<D>>& g) {
+Vec<D> shifted_velocity_change(const Stencil<D>& stencil, std::span<const Vec<D>> v, const Vec<D>& dr,
+                               std::vector<Vec<D>>& g) {
   // A splash or a thin sheet (det M_i small) has no velocity gradient worth the name: L_i
   // amplifies whatever its few neighbours (walls at rest among them) say, and carried that way a
   // lone drop gained 1.3 m/s in 0.015 s running up the dam break's far wall.
-  if (moment_matrix(view, i).determinant() < kCarryDeterminant) return Vec<D>::Zero();
-  gradient_weights_corrected(view, i, g);
-  auto nb = view.neighbours.of(i);
+  const Mat<D> M = moment_matrix(stencil);
+  if (M.determinant() < kCarryDeterminant) return Vec<D>::Zero();
+  gradient_weights_corrected(stencil, Mat<D>(M.inverse()), g);  // det M >= 0.6: L_i = M_i^-1
+  const auto nb = stencil.neighbours;
+  const std::size_t i = stencil.i;
   Vec<D> change = Vec<D>::Zero();
   for (std::size_t k = 0; k < nb.size(); ++k) change += dr.dot(g[k]) * (v[nb[k]] - v[i]);
   return change;
+}
+
+template <int D>
+Vec<D> shifted_velocity_change(const ParticleView<D>& view, std::span<const Vec<D>> v, std::size_t i,
+                               const Vec<D>& dr, std::vector<Vec<D>>& g) {
+  return shifted_velocity_change(gathered_stencil(view, i), v, dr, g);
 }
 
 // Every fluid particle gets its shift and the velocity change gathered beforehand (from the
