@@ -84,8 +84,11 @@ class Kernel {
         const double t = 2.0 - q;
         return sigma_ * t * t * t;
       }
-      case KernelType::Mps:
-        return q >= 1.0 ? 0.0 : sigma_ * (1.0 / q - 1.0);
+      case KernelType::Mps: {
+        // A select, not a branch: MPS lists hold a skin beyond r_e, so q >= 1 is common.
+        const double inside = sigma_ * (1.0 / q - 1.0);
+        return q < 1.0 ? inside : 0.0;
+      }
     }
     return 0.0;
   }

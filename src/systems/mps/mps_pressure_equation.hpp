@@ -58,16 +58,18 @@ class MpsPressureEquation final : public System<D> {
         sys.particle_of_row.push_back(static_cast<std::uint32_t>(i));
       }
     const std::size_t rows = sys.particle_of_row.size();
-    // Pass 1: entries per row (the diagonal plus unknown neighbours inside r_e).
+    // Pass 1: entries per row (the diagonal plus unknown neighbours inside r_e). Both passes
+    // test |r|^2 < r_e^2, so that they agree on every pair without a square root or a division
+    // here (computing the weight in both passes made this pass as dear as the second).
     auto& A = sys.A;
     A.rows = A.cols = rows;
     A.row_ptr.assign(rows + 1, 0);
+    const double re2 = p_.weight.support() * p_.weight.support();
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 512), [&](auto range) {
       for (std::size_t r = range.begin(); r != range.end(); ++r) {
         const std::size_t i = sys.particle_of_row[r];
         std::uint64_t count = 1;
-        for (auto j : nl.of(i))
-          if (row_of_[j] != kNoRow && p_.weight.w(domain.offset(x[i], x[j]).norm()) > 0) ++count;
+        for (auto j : nl.of(i)) count += row_of_[j] != kNoRow && domain.offset(x[i], x[j]).squaredNorm() < re2;
         A.row_ptr[r + 1] = count;
       }
     });
@@ -87,14 +89,18 @@ class MpsPressureEquation final : public System<D> {
         double diagonal = 0;
         for (auto j : nl.of(i)) {
           if (role[j] == kPressureNone) continue;
-          double w = p_.weight.w(domain.offset(x[i], x[j]).norm());
-          if (w <= 0) continue;
+          const double r2 = domain.offset(x[i], x[j]).squaredNorm();
+          if (!(r2 < re2)) continue;
+          const double w = p_.weight.w(std::sqrt(r2));
           diagonal += c * w;
           if (row_of_[j] != kNoRow) entries.emplace_back(row_of_[j], -c * w);
         }
         if (!(diagonal > 0) || !std::isfinite(diagonal)) bad_row = std::min<std::size_t>(bad_row, r);
-        entries.emplace_back(static_cast<std::uint32_t>(r), diagonal);
-        std::sort(entries.begin(), entries.end());
+        // Rows follow the particle order and each list is ascending, so the entries are sorted
+        // already: the diagonal goes in its place.
+        const std::pair<std::uint32_t, double> diagonal_entry{static_cast<std::uint32_t>(r), diagonal};
+        entries.insert(std::upper_bound(entries.begin(), entries.end(), diagonal_entry), diagonal_entry);
+        if (!std::is_sorted(entries.begin(), entries.end())) std::sort(entries.begin(), entries.end());
         auto k = A.row_ptr[r];
         for (auto& [col, val] : entries) {
           A.col[k] = col;
