@@ -31,3 +31,5 @@ set_tests_properties("energy: an ISPH sloshing tank with the violent-flow set-up
                      PROPERTIES LABELS slow COST 18)
 set_tests_properties("validation: the WCSPH dam break is the same with and without a Verlet skin"
                      PROPERTIES LABELS slow COST 25)
+set_tests_properties("validation: the MPS and ISPH dam breaks are the same with and without a Verlet skin"
+                     PROPERTIES LABELS slow COST 20)

@@ -371,7 +371,7 @@ class Runner {
     w.key("wall_time_s").value(wall);
     w.key("particle_steps_per_second").value(wall > 0 ? world_.size() * double(step_) / wall : 0.0);
     w.key("frames").value(static_cast<std::int64_t>(frames_.size()));
-    // Steps per build tell whether a Verlet skin pays (method wcsph, [particles] neighbour_skin).
+    // Steps per build tell whether a Verlet skin pays ([particles] neighbour_skin).
     w.key("neighbour_list_builds").value(static_cast<std::int64_t>(nl.builds));
     w.key("bytes_per_particle").begin_object();
     w.key("columns").value(static_cast<std::int64_t>(world_.bytes_per_particle()));

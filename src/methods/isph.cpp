@@ -115,7 +115,7 @@ std::vector<SystemPtr<D>> isph_pipeline(const Scene& s, const IsphParameters<D>&
   SolverSpec solver = s.solver;
   solver.krylov = "bicgstab";
   std::vector<SystemPtr<D>> list{
-      std::make_shared<NeighbourSearch<D>>(p.search_radius(), kDummy),
+      std::make_shared<NeighbourSearch<D>>(p.search_radius(), kDummy, s.neighbour_skin * s.spacing, false),
       std::make_shared<IsphPredictor<D>>(p),
       isph2_surface_detection<D>(context),
       std::make_shared<IsphPressureEquation<D>>(p),

@@ -75,7 +75,7 @@ std::vector<SystemPtr<D>> mps_pipeline(const Scene& s, const MpsParameters<D>& p
   // Dummy-dummy pairs are never used; wall-wall and wall-dummy pairs are (wall number density,
   // wall rows of the pressure equation).
   std::vector<SystemPtr<D>> list{
-      std::make_shared<NeighbourSearch<D>>(p.search_radius(), kDummy),
+      std::make_shared<NeighbourSearch<D>>(p.search_radius(), kDummy, s.neighbour_skin * s.spacing, false),
       std::make_shared<MpsExplicitForces<D>>(p),
       std::make_shared<MpsNumberDensity<D>>(p),
       std::make_shared<MpsPressureEquation<D>>(p),

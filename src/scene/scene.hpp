@@ -60,7 +60,7 @@ struct Scene {
   double spacing = 0, smoothing_ratio = 1.5;
   std::string kernel = "wendland_c2";
   int reorder_interval = 25;
-  double neighbour_skin = 0.6;  // Verlet skin in spacings (WCSPH)
+  double neighbour_skin = 0.6;  // Verlet skin in spacings
   double density = 1000, viscosity = 0, sound_speed = 0, sound_speed_factor = 10, gamma = 7;
   std::vector<double> gravity;
   std::string method = "wcsph";

@@ -168,7 +168,7 @@ std::pair<double, double> max_displacement_and_speed(const Domain<D>& domain, st
           // The minimum image: a particle wrapped across a periodic side has not moved far.
           Vec<D> d = periodic ? domain.displacement(x[i], ref[i]) : Vec<D>(x[i] - ref[i]);
           m.first = std::max(m.first, d.squaredNorm());
-          m.second = std::max(m.second, v[i].squaredNorm());
+          if (!v.empty()) m.second = std::max(m.second, v[i].squaredNorm());
         }
         return m;
       },

@@ -31,7 +31,8 @@ void filter_neighbour_list(const Domain<D>& domain, double radius, std::span<con
                            const NeighbourList& candidates, NeighbourList& out,
                            std::vector<std::uint32_t>& scratch);
 
-// Largest |x_i - ref_i| (minimum image on periodic axes) and largest |v_i| (the Verlet list's rebuild test).
+// Largest |x_i - ref_i| (minimum image on periodic axes) and largest |v_i| (the Verlet list's
+// rebuild test); an empty v gives speed 0.
 template <int D>
 std::pair<double, double> max_displacement_and_speed(const Domain<D>& domain, std::span<const Vec<D>> x,
                                                      std::span<const Vec<D>> ref, std::span<const Vec<D>> v);
@@ -50,14 +51,18 @@ class NeighbourSearch final : public System<D> {
   // filtered into the exact list within `radius`: the systems see the same list, in the same
   // order, as without a skin (measured: a skin seen by the pair loops costs them more than the
   // filter, since every candidate beyond the support is still gathered).
-  explicit NeighbourSearch(double radius, std::int32_t skip_kind = -1, double skin = 0)
-      : radius_(radius), skip_kind_(skip_kind), skin_(skin) {}
+  // moves_within_step: the list is used again after the particles move within the step (WCSPH's
+  // midpoint predictor), so the test keeps v_max dt in hand; false where the search radius itself
+  // holds the step's motion (MPS, ISPH) and the list only has to be exact at the start of the step.
+  explicit NeighbourSearch(double radius, std::int32_t skip_kind = -1, double skin = 0,
+                           bool moves_within_step = true)
+      : radius_(radius), skip_kind_(skip_kind), skin_(skin), moves_within_step_(moves_within_step) {}
   std::string name() const override { return "neighbour_search"; }
   Access access() const override {
     Access a;
     a.read(components::position, components::kind, domain_resource<D>)
         .write(neighbours_resource, cell_grid_resource<D>);
-    if (skin_ > 0) a.read(components::velocity, resources::dt);
+    if (skin_ > 0 && moves_within_step_) a.read(components::velocity, resources::dt);
     return a;
   }
   void initialise(World<D>&, Resources& res) override {
@@ -77,9 +82,9 @@ class NeighbourSearch final : public System<D> {
     bool valid =
         candidates_.builds > 0 && ctx.structure_version() == version_ && x.size() == reference_.size();
     if (valid) {
-      auto [moved, vmax] =
-          max_displacement_and_speed<D>(domain, x, reference_, ctx.read(components::velocity));
-      valid = moved + vmax * ctx.read(resources::dt) <= 0.5 * skin_;
+      const auto v = moves_within_step_ ? ctx.read(components::velocity) : std::span<const Vec<D>>{};
+      auto [moved, vmax] = max_displacement_and_speed<D>(domain, x, reference_, v);
+      valid = moved + (moves_within_step_ ? vmax * ctx.read(resources::dt) : 0.0) <= 0.5 * skin_;
     }
     if (!valid) {
       build_neighbour_list<D>(domain, radius_ + skin_, x, ctx.write(cell_grid_resource<D>), candidates_, kind,
@@ -97,6 +102,7 @@ class NeighbourSearch final : public System<D> {
   double radius_;
   std::int32_t skip_kind_;
   double skin_;
+  bool moves_within_step_;
   NeighbourList candidates_;
   std::vector<std::uint32_t> scratch_;
   std::uint64_t version_ = 0;
