@@ -62,6 +62,7 @@ bench: build py-deps
 	tools/bench_dam_break.sh $(BUILD)
 	tools/bench_speedup.sh $(BUILD)
 	tools/bench_isph.sh $(BUILD) 10
+	tools/bench_time_per_unit_T.sh $(BUILD) 10
 	mkdir -p docs/img
 	$(BUILD)/bench/ryushi_bench_solvers 2
 	/usr/bin/python3 tools/bench_mps_solvers.py --build $(BUILD)

@@ -4,7 +4,12 @@ cases 2A/2B: per-step time split into the method's systems, multigrid against di
 
 Usage: /usr/bin/python3 tools/bench_mps_solvers.py [--build build] [--spacing 0.00125]
                                                    [--steps 30] [--threads 2] [--repeat 2]
-The default spacing, a / l0 = 200, gives 80,000 fluid particles (the paper's case 2A count).
+                                                   [--configs "DCG,MGCG S-W mixed"]
+                                                   [--scene scenes/dam_break_mps_2d.toml]
+The default spacing, a / l0 = 200, gives 80,000 fluid particles (the paper's case 2A count);
+--spacing 0.0003125 gives 1.28M (case 2B), where --configs picks DCG and the S-W multigrid only
+(DCG needs minutes per step there). In 3D, --scene scenes/dam_break_mps_3d.toml --spacing
+0.003125 gives 1,024,000 fluid particles (a / l0 = 80).
 Prints, per configuration: ms per step for each system, mean CG iterations per solve, total
 ms per step and the speed-up of the total against DCG; plus particle-steps per second and ns
 per particle per system. With --repeat R the configurations run R times, every other round in
@@ -18,7 +23,7 @@ import subprocess
 import tempfile
 
 CONFIGS = [
-    ("DCG", ["solver.preconditioner=jacobi"]),
+    ("DCG", ["solver.preconditioner=jacobi", "solver.max_iterations=50000"]),  # thousands at 1.28M
     ("MGCG V double", ["solver.preconditioner=multigrid", "solver.cycle=v", "solver.precision=double"]),
     ("MGCG W double", ["solver.preconditioner=multigrid", "solver.cycle=w", "solver.precision=double"]),
     ("MGCG S-W double", ["solver.preconditioner=multigrid", "solver.cycle=sw", "solver.precision=double"]),
@@ -27,7 +32,7 @@ CONFIGS = [
 
 
 def run(args, sets, out):
-    cmd = [os.path.join(args.build, "ryushi"), "run", "scenes/dam_break_mps_2d.toml", "--out", out,
+    cmd = [os.path.join(args.build, "ryushi"), "run", args.scene, "--out", out,
            "--threads", str(args.threads), "--quiet",
            "--set", f"particles.spacing={args.spacing}", "--set", f"time.max_steps={args.steps}",
            "--set", "output.interval=100", "--set", f"solver.tolerance={args.tolerance}"]
@@ -44,16 +49,24 @@ def run(args, sets, out):
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("--build", default="build")
+    p.add_argument("--scene", default="scenes/dam_break_mps_2d.toml")
     p.add_argument("--spacing", type=float, default=0.00125)
     p.add_argument("--steps", type=int, default=30)
     p.add_argument("--repeat", type=int, default=2)
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--tolerance", type=float, default=1e-8)
+    p.add_argument("--configs", default=",".join(name for name, _ in CONFIGS),
+                   help="comma-separated configuration names, DCG first (the speed-ups are against it)")
     args = p.parse_args()
+    wanted = args.configs.split(",")
+    unknown = [w for w in wanted if w not in dict(CONFIGS)]
+    if unknown or wanted[0] != "DCG":
+        p.error(f"--configs: names from {[n for n, _ in CONFIGS]}, DCG first (got {wanted})")
+    configs = [(name, dict(CONFIGS)[name]) for name in wanted]
     best = {}
     with tempfile.TemporaryDirectory() as tmp:
         for round_ in range(args.repeat):
-            order = CONFIGS if round_ % 2 == 0 else list(reversed(CONFIGS))
+            order = configs if round_ % 2 == 0 else list(reversed(configs))
             for name, sets in order:
                 profile, summary = run(args, sets, os.path.join(tmp, name.replace(" ", "_")))
                 per_system = {s["name"]: s["mean_s"] * 1e3 for s in profile["systems"]}
@@ -63,10 +76,10 @@ def main():
                     per_system = {k: min(v, old[1].get(k, v)) for k, v in per_system.items()}
                     step = min(step, old[2])
                 best[name] = (name, per_system, step, summary)
-    rows = [best[name] for name, _ in CONFIGS]
+    rows = [best[name] for name, _ in configs]
     n = rows[0][3]["particles"]
     fluid = rows[0][3]["fluid_particles"]
-    print(f"# MPS dam break, {fluid} fluid + {n - fluid} wall particles, {args.steps} steps, "
+    print(f"# MPS dam break ({args.scene}), {fluid} fluid + {n - fluid} wall particles, {args.steps} steps, "
           f"{args.threads} threads, tolerance {args.tolerance}, minimum of {args.repeat} rounds")
     systems = ["neighbour_search", "mps_explicit_forces", "mps_number_density", "ppe_assembly",
                "jacobi_setup", "multigrid_setup", "linear_solve", "mps_pressure_correction", "mps_collision"]
