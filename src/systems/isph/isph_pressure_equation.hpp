@@ -182,10 +182,10 @@ class IsphPressureEquation final : public System<D> {
             if (row_of_[nb[k]] != kNoRow && w[k] != 0) entries.emplace_back(row_of_[nb[k]], -w[k]);
             else from_known += w[k] * known(nb[k]);
           }
-          const bool corrected = moment_matrix(stencil).determinant() >= p_.uncorrected_divergence_det;
+          const Mat<D> M = moment_matrix(stencil);
           double div = 0;
-          if (corrected) {
-            gradient_weights_corrected(stencil, g);
+          if (M.determinant() >= p_.uncorrected_divergence_det) {
+            gradient_weights_corrected(stencil, renormalisation(M), g);
             for (std::size_t k = 0; k < nb.size(); ++k) div += g[k].dot(v_star_[nb[k]] - v[i]);
           } else {
             for (std::size_t k = 0; k < nb.size(); ++k)

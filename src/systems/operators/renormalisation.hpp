@@ -25,13 +25,18 @@ Mat<D> moment_matrix(const ParticleView<D>& v, std::size_t i) {
   return moment_matrix(gathered_stencil(v, i));
 }
 
-// L_i, or the identity where M_i is too close to singular (then `corrected` is false).
+// L_i from the moment matrix M_i, or the identity where M_i is too close to singular (then
+// `corrected` is false).
 template <int D>
-Mat<D> renormalisation(const Stencil<D>& s, bool* corrected = nullptr) {
-  Mat<D> M = moment_matrix(s);
+Mat<D> renormalisation(const Mat<D>& M, bool* corrected = nullptr) {
   bool ok = M.determinant() > kMinRenormalisationDeterminant;
   if (corrected) *corrected = ok;
   return ok ? Mat<D>(M.inverse()) : Mat<D>::Identity();
+}
+
+template <int D>
+Mat<D> renormalisation(const Stencil<D>& s, bool* corrected = nullptr) {
+  return renormalisation(moment_matrix(s), corrected);
 }
 
 template <int D>
