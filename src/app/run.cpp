@@ -403,7 +403,7 @@ class Runner {
     if (res_.has(solve_statistics_resource.name)) {
       const auto& st = res_.get(solve_statistics_resource);
       w.key("linear_solver").begin_object();
-      w.key("krylov").value(scene_.solver.krylov);
+      w.key("krylov").value(st.krylov.empty() ? scene_.solver.krylov : st.krylov);
       w.key("preconditioner").value(scene_.solver.preconditioner);
       w.key("cycle").value(scene_.solver.cycle);
       w.key("precision").value(scene_.solver.precision);

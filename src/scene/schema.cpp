@@ -115,7 +115,7 @@ std::vector<SectionSpec> build() {
                 non_negative("dt_min", "s", "1e-9", "An adaptive step below this is a numerical failure (dt collapse).")}});
   s.push_back({"solver", false, false,
                "The linear solver of the pressure Poisson equation (implicit methods: mps, isph; isph's system is not symmetric and always uses bicgstab). Ignored by wcsph. Each step the pipeline runs `ppe_assembly`, then `multigrid_setup` (or `jacobi_setup`), then `linear_solve`, each timed on its own in profile.json. docs/solvers.md.",
-               {choice("krylov", "\"cg\"", "Krylov method: cg (symmetric matrices, the MPS Laplacian) or bicgstab (non-symmetric).", {"cg", "bicgstab"}),
+               {choice("krylov", "\"cg\"", "Krylov method: cg (symmetric matrices, the MPS Laplacian) or bicgstab (non-symmetric). A non-symmetric system (ISPH) is always solved with bicgstab; summary.json names the method the solves used.", {"cg", "bicgstab"}),
                 choice("preconditioner", "\"multigrid\"", "none, jacobi (diagonal scaling: DCG) or multigrid (bucket-based multigrid, BMG).", {"none", "jacobi", "multigrid"}),
                 choice("cycle", "\"sw\"", "Multigrid cycle: v, w or sw (W with the scale correction A_c = P^T A P / 2 below level 1, BMG paper eq. 18).", {"v", "w", "sw"}),
                 choice("precision", "\"mixed\"", "Multigrid hierarchy in float under a double Krylov method (mixed) or all double.", {"double", "mixed"}),

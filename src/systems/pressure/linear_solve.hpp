@@ -45,9 +45,11 @@ class LinearSolve final : public System<D> {
         if (pre.M) M = pre.M.get();
       }
       solvers::SolveOptions o{spec_.tolerance, spec_.max_iterations};
+      const bool bicgstab = spec_.krylov == "bicgstab" || !sys.symmetric;
+      stats.krylov = bicgstab ? "bicgstab" : "cg";
       auto solve = [&](std::span<const double> b, std::span<double> x) {
-        return spec_.krylov == "bicgstab" || !sys.symmetric ? solvers::bicgstab(sys.A, b, x, *M, o)
-                                                             : solvers::conjugate_gradient(sys.A, b, x, *M, o);
+        return bicgstab ? solvers::bicgstab(sys.A, b, x, *M, o)
+                        : solvers::conjugate_gradient(sys.A, b, x, *M, o);
       };
       status = solve(sys.b, x_);
       if (status.converged && sys.gauge_free && !sys.gauge_exact) {
@@ -67,7 +69,7 @@ class LinearSolve final : public System<D> {
         char m[256];
         std::snprintf(
             m, sizeof m, "%s on %zu unknowns stopped after %d iterations at relative residual %.3e: %s",
-            spec_.krylov.c_str(), rows, status.iterations, status.relative_residual, status.reason.c_str());
+            stats.krylov.c_str(), rows, status.iterations, status.relative_residual, status.reason.c_str());
         throw std::runtime_error(m);
       }
     }

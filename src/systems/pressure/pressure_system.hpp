@@ -46,6 +46,7 @@ struct LinearSolveStatistics {
   int max_iterations = 0;
   double max_relative_residual = 0;
   std::size_t max_rows = 0, max_nonzeros = 0;
+  std::string krylov;  // the method the solves used (a non-symmetric system takes BiCGSTAB)
 };
 
 inline constexpr Resource<PressureSystem> pressure_system_resource{"pressure_system"};
