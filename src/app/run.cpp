@@ -271,6 +271,10 @@ class Runner {
     } catch (const std::exception& e) {
       throw NumericalFailure("step " + std::to_string(step_) + ": " + e.what());
     }
+    if (res_.has(structural_changes_resource<D>.name)) {
+      auto& changes = res_.get(structural_changes_resource<D>);
+      if (!changes.empty()) changes.apply(world_);
+    }
     profiler_.add_step_time(std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
     time_ = lands ? target : time_ + dt_used_;  // frame times exactly as asked, no round-off
     res_.get(resources::time) = time_;

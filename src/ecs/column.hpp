@@ -32,6 +32,7 @@ class ColumnBase {
   virtual void resize(std::size_t n) = 0;
   // new_to_old[k] is the old index of the element that ends at index k.
   virtual void gather(std::span<const std::uint32_t> new_to_old) = 0;
+  virtual void copy(std::size_t from, std::size_t to) = 0;
 };
 
 template <class T>
@@ -47,6 +48,7 @@ class Column final : public ColumnBase {
     for (std::size_t k = 0; k < new_to_old.size(); ++k) out[k] = data_[new_to_old[k]];
     data_.swap(out);
   }
+  void copy(std::size_t from, std::size_t to) override { data_[to] = data_[from]; }
   std::vector<T>& data() { return data_; }
 
  private:

@@ -76,4 +76,9 @@ class System {
 template <int D>
 using SystemPtr = std::shared_ptr<System<D>>;
 
+// Structural changes a system asks for (particle splitting's children): recorded during the
+// step, applied by the driver after it, before the health check and the output.
+template <int D>
+inline constexpr Resource<CommandBuffer<D>> structural_changes_resource{"structural_changes"};
+
 }  // namespace ryushi

@@ -3,6 +3,7 @@
 // A column exists only once something asks for it (a system's declared access or the scene),
 // so a scene pays only for what it models. Structural changes (append, erase, permute) are
 // recorded in a CommandBuffer and applied between steps, never while systems run.
+#include <functional>
 #include <map>
 #include <memory>
 #include <span>
@@ -75,6 +76,13 @@ class World {
     return first;
   }
 
+  // Particle `to` takes every column of particle `from` but its id (a split child inherits its
+  // parent's state, including columns its method does not know).
+  void copy_particle(std::size_t from, std::size_t to) {
+    for (auto& [name, col] : columns_)
+      if (name != components::id.name) col->copy(from, to);
+  }
+
   // Reorders every column: new_to_old[k] is the old index of the particle that moves to k.
   // Ids travel with their particles, so they stay stable.
   void permute(std::span<const std::uint32_t> new_to_old) {
@@ -118,26 +126,40 @@ class World {
 
 // Structural changes recorded while systems run and applied by the driver between steps, in
 // the order they were recorded (each refers to the particle order left by the one before).
+// An append adds n particles of one kind (fresh ids, other columns zero) and then calls its
+// fill(world, first) to set their columns: particle splitting records its children so.
 template <int D>
 class CommandBuffer {
  public:
-  void erase(std::vector<std::uint32_t> indices) { ops_.push_back({false, std::move(indices)}); }
-  void permute(std::vector<std::uint32_t> new_to_old) { ops_.push_back({true, std::move(new_to_old)}); }
+  using Fill = std::function<void(World<D>&, std::size_t first)>;
+  void erase(std::vector<std::uint32_t> indices) { ops_.push_back({Op::Erase, std::move(indices), 0, 0, {}}); }
+  void permute(std::vector<std::uint32_t> new_to_old) {
+    ops_.push_back({Op::Permute, std::move(new_to_old), 0, 0, {}});
+  }
+  void append(std::size_t n, std::int32_t kind, Fill fill) { ops_.push_back({Op::Append, {}, n, kind, std::move(fill)}); }
   bool empty() const { return ops_.empty(); }
   void apply(World<D>& world) {
     for (auto& op : ops_) {
-      if (op.is_permutation)
-        world.permute(op.indices);
-      else
-        world.erase(op.indices);
+      switch (op.type) {
+        case Op::Permute: world.permute(op.indices); break;
+        case Op::Erase: world.erase(op.indices); break;
+        case Op::Append: {
+          std::size_t first = world.append(op.count, op.kind);
+          if (op.fill) op.fill(world, first);
+          break;
+        }
+      }
     }
     ops_.clear();
   }
 
  private:
   struct Op {
-    bool is_permutation;
+    enum Type { Erase, Permute, Append } type;
     std::vector<std::uint32_t> indices;
+    std::size_t count;
+    std::int32_t kind;
+    Fill fill;
   };
   std::vector<Op> ops_;
 };

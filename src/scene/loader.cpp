@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include <spdlog/spdlog.h>
@@ -241,6 +242,9 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       val.fail_at(&k.source(), name, "unknown section '" + name + "'" + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
     }
   }
+  // The sections the file (or --set) wrote; the others get their defaults inserted below.
+  std::set<std::string> written;
+  for (auto& [k, node] : root) written.insert(std::string(k.str()));
   // The dimension first: vector lengths depend on it.
   {
     auto* scene_tbl = root["scene"].as_table();
@@ -303,10 +307,23 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     for (int a = 0; a < D; ++a) sc.periodic[a] = *(*p)[a].value<bool>();
   sc.spacing = *get("particles", "spacing").value<double>();
   sc.method = *get("method", "name").value<std::string>();
-  const bool mps = sc.method == "mps", isph = sc.method == "isph";
+  const bool mps = sc.method == "mps", isph = sc.method == "isph", swe = sc.method == "swe";
   // ISPH: the ISPH paper's cubic spline with h = 1.2 d.
-  sc.smoothing_ratio = root["particles"]["smoothing_ratio"].value_or(mps ? (D == 2 ? 3.1 : 2.1) : isph ? 1.2 : 1.5);
-  sc.kernel = root["particles"]["kernel"].value_or(std::string(mps ? "mps" : isph ? "cubic_spline" : "wendland_c2"));
+  sc.swe.influence_ratio = *get("swe", "influence_ratio").value<double>();
+  sc.smoothing_ratio = root["particles"]["smoothing_ratio"].value_or(mps ? (D == 2 ? 3.1 : 2.1) : isph ? 1.2 : swe ? sc.swe.influence_ratio : 1.5);
+  sc.kernel = root["particles"]["kernel"].value_or(std::string(mps ? "mps" : isph ? "cubic_spline" : swe ? "spiky" : "wendland_c2"));
+  if (swe) {
+    if (D != 2) val.fail(root["scene"]["dimension"].node(), "scene.dimension", "method 'swe' is 2D (a plan view: x and y horizontal); set dimension = 2");
+    if (sc.kernel != "spiky")
+      val.fail(root["particles"]["kernel"].node(), "particles.kernel", "method 'swe' uses the spiky kernel (eq. 8): leave kernel out");
+    if (root["particles"]["smoothing_ratio"])
+      val.fail(root["particles"]["smoothing_ratio"].node(), "particles.smoothing_ratio", "method 'swe' sets r_e from the particle areas: use [swe] influence_ratio");
+    if (root["physics"]["gravity"])
+      val.fail(root["physics"]["gravity"].node(), "physics.gravity", "method 'swe' has no in-plane gravity: set [swe] gravity (along -z) and the bed's slope in [[bed_ramp]] or [bed]");
+  } else {
+    for (const char* sec : {"swe", "bed", "bed_hump", "bed_ramp", "splitting"})
+      if (written.count(sec)) val.fail(root[sec].node(), sec, std::string("[") + sec + "] is for [method] name = \"swe\"");
+  }
   if (mps && sc.kernel != "mps")
     val.fail(root["particles"]["kernel"].node(), "particles.kernel",
              "method 'mps' uses the MPS weight: kernel must be \"mps\" (or left out), not '" + sc.kernel + "'");
@@ -368,7 +385,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     sv.bottom_size = integer("bottom_size");
   }
   sc.end_time = *get("time", "end").value<double>();
-  sc.cfl = *get("time", "cfl").value<double>();
+  sc.cfl = root["time"]["cfl"].value_or(swe ? 0.5 : 0.2);
   sc.fixed_dt = *get("time", "dt").value<double>();
   sc.max_steps = *get("time", "max_steps").value<long long>();
   sc.dt_min = *get("time", "dt_min").value<double>();
@@ -377,6 +394,52 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.probe_interval = root["output"]["probe_interval"].value_or(sc.output_interval / 10.0);
   if (sc.probe_interval <= 0) sc.probe_interval = sc.output_interval / 10.0;
   for (auto& e : *root["output"]["fields"].as_array()) sc.output_fields.push_back(*e.value<std::string>());
+  if (swe) {
+    auto& w = sc.swe;
+    w.gravity = *get("swe", "gravity").value<double>();
+    w.manning = *get("swe", "manning").value<double>();
+    w.slip = *get("swe", "walls").value<std::string>() == "slip";
+    w.edge_correction = *get("swe", "edge_correction").value<bool>();
+    if (root["swe"]["ritter_dam_x"] || root["swe"]["ritter_depth"]) {
+      if (!root["swe"]["ritter_dam_x"] || !root["swe"]["ritter_depth"])
+        val.fail(root["swe"].node(), "swe.ritter_dam_x", "[swe] ritter_dam_x and ritter_depth go together");
+      w.ritter_dam_x = *get("swe", "ritter_dam_x").value<double>();
+      w.ritter_depth = *get("swe", "ritter_depth").value<double>();
+    }
+    w.splitting = *get("splitting", "enabled").value<bool>();
+    w.split_area_ratio = *get("splitting", "area_ratio").value<double>();
+    w.split_distance = *get("splitting", "distance").value<double>();
+    w.split_along_gap = *get("splitting", "direction").value<std::string>() == "gap";
+    w.max_particles = root["splitting"]["max_particles"].value_or(0LL);
+    auto& bed = *w.bed;
+    bed.elevation_base = *get("bed", "elevation").value<double>();
+    if (auto raster = root["bed"]["raster"].value<std::string>()) {
+      auto file = std::filesystem::path(*raster);
+      if (file.is_relative()) file = std::filesystem::path(path).parent_path() / file;
+      try {
+        bed.raster = std::make_shared<Raster>(read_esri_ascii(file));
+      } catch (const RasterError& e) {
+        val.fail(root["bed"]["raster"].node(), "bed.raster", std::string("bed.raster: ") + e.what());
+      }
+      if (bed.raster->nodata_cells > 0)
+        spdlog::info("{}: {} no-data cells of {} are dry high ground", file.string(), bed.raster->nodata_cells,
+                     bed.raster->z.size());
+    }
+    auto xy = [&](const toml::node* n) {
+      auto v = vec_of(*n);
+      return std::array<double, 2>{v[0], v[1]};
+    };
+    if (auto* arr = root["bed_hump"].as_array())
+      for (std::size_t i = 0; i < arr->size(); ++i)
+        bed.humps.push_back({xy(root["bed_hump"][i]["centre"].node()), *root["bed_hump"][i]["height"].value<double>(),
+                             *root["bed_hump"][i]["width"].value<double>()});
+    if (auto* arr = root["bed_ramp"].as_array())
+      for (std::size_t i = 0; i < arr->size(); ++i) {
+        auto r = root["bed_ramp"][i];
+        bed.ramps.push_back({xy(r["min"].node()), xy(r["max"].node()), xy(r["origin"].node()), xy(r["gradient"].node())});
+      }
+    sc.gravity.assign(D, 0.0);
+  }
 
   auto where = [&](const char* sec, std::size_t i, const char* key) -> const toml::node* {
     return root[sec][i][key].node();
@@ -399,6 +462,14 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       FluidBlock b{vec_of(*where("fluid", i, "min")), vec_of(*where("fluid", i, "max")), {}, 0.0};
       if (auto* v = where("fluid", i, "velocity")) b.velocity = vec_of(*v);
       b.angular_velocity = *root["fluid"][i]["angular_velocity"].value<double>();
+      if (auto v = root["fluid"][i]["depth"].value<double>()) b.depth = *v;
+      if (auto v = root["fluid"][i]["surface_elevation"].value<double>()) b.surface_elevation = *v;
+      if (swe && std::isnan(b.depth) == std::isnan(b.surface_elevation))
+        val.fail(&(*arr)[i], path_of("fluid", i, "depth"),
+                 "[[fluid]] #" + std::to_string(i) + ": method swe needs one of depth and surface_elevation");
+      if (!swe && !(std::isnan(b.depth) && std::isnan(b.surface_elevation)))
+        val.fail(&(*arr)[i], path_of("fluid", i, "depth"),
+                 "[[fluid]] #" + std::to_string(i) + ": depth and surface_elevation are for method swe");
       if (b.angular_velocity != 0 && D != 2)
         val.fail(where("fluid", i, "angular_velocity"), path_of("fluid", i, "angular_velocity"),
                  "[[fluid]] #" + std::to_string(i) + ": angular_velocity is for 2D scenes");
@@ -489,6 +560,8 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
         val.fail(&(*arr)[i], path_of("probe", i, "position"), "[[probe]] '" + p.name + "' of type " + p.type + " needs a position");
       if (!p.position.empty() && !inside(p.position, p.position))
         val.fail(where("probe", i, "position"), path_of("probe", i, "position"), "[[probe]] '" + p.name + "' lies outside the domain");
+      if (p.type == "front_depth" && !swe)
+        val.fail(where("probe", i, "type"), path_of("probe", i, "type"), "[[probe]] '" + p.name + "': front_depth is for method swe");
       for (auto& q : sc.probes)
         if (q.name == p.name) val.fail(where("probe", i, "name"), path_of("probe", i, "name"), "two probes are named '" + p.name + "'");
       sc.probes.push_back(std::move(p));

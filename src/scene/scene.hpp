@@ -3,10 +3,15 @@
 // which reports any problem as SceneError("file:line:column: message").
 #include <toml++/toml.h>
 
+#include <limits>
+#include <memory>
+
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "systems/swe/bed.hpp"
 
 namespace ryushi {
 
@@ -19,6 +24,9 @@ struct FluidBlock {
   std::vector<double> min, max;
   std::vector<double> velocity;   // initial velocity (empty: at rest)
   double angular_velocity = 0;    // 2D: initial rigid rotation (omega (y - yc), -omega (x - xc))
+  // swe: the water depth, or the surface elevation (depth = surface - bed), NaN when not given.
+  double depth = std::numeric_limits<double>::quiet_NaN();
+  double surface_elevation = std::numeric_limits<double>::quiet_NaN();
 };
 struct WallBox {
   std::vector<double> min, max;
@@ -49,6 +57,18 @@ struct SolverSpec {
   int max_iterations = 1000;
   int pre_smoothing = 1, post_smoothing = 1, bottom_smoothing = 2;
   long long bottom_size = 64;
+};
+
+// [swe], [bed] and [splitting]: the shallow-water method (docs/swe.md).
+struct SweSpec {
+  double gravity = 9.81, manning = 0, influence_ratio = 1.3;
+  bool slip = true, edge_correction = true;
+  // Ritter dry-bed dam-break reference (summary.json metrics); NaN: none.
+  double ritter_dam_x = std::numeric_limits<double>::quiet_NaN(), ritter_depth = 0;
+  bool splitting = true, split_along_gap = true;
+  double split_area_ratio = 1.5, split_distance = 0.7;
+  long long max_particles = 0;
+  std::shared_ptr<Bed> bed = std::make_shared<Bed>();
 };
 
 struct Scene {
@@ -83,6 +103,7 @@ struct Scene {
   double compression_relaxation = 0.0;
   double fickian_coefficient = 2.0, anti_clumping = 0.2, max_shift = 0.2, xsph_epsilon = 0.5;
   SolverSpec solver;
+  SweSpec swe;
   double end_time = 0, cfl = 0.2, fixed_dt = 0, dt_min = 1e-9;
   long long max_steps = 0;
   double output_interval = 0, probe_interval = 0;

@@ -107,9 +107,35 @@ std::vector<SectionSpec> build() {
                 ranged({"anti_clumping", K::Float, "", "0.2", "fickian model: R of the anti-clumping term, grad C = sum V_j (1 + R (W_ij/W(d))^4) grad W_ij (Lind et al. 2012)."}, 0.0, 10.0),
                 ranged({"max_shift", K::Float, "", "0.2", "fickian and xsph models: largest shift per step, in particle spacings."}, 0.0, 1.0),
                 ranged({"xsph_epsilon", K::Float, "", "0.5", "xsph model: eps of the velocity smoothing (Monaghan 1989: 0.5)."}, 0.0, 1.0)}});
+  s.push_back({"swe", false, false, "The shallow-water method ([method] name = \"swe\", 2D plan view: x and y horizontal, the water column along z; docs/swe.md). [physics] gravity must be left out (the water's weight acts along z: `gravity` below).",
+               {positive("gravity", "m/s^2", "9.81", "g of the shallow-water equations (along -z)."),
+                non_negative("manning", "s/m^(1/3)", "0.0", "Manning roughness n_M of the bed friction S_f = n_M^2 |u| u / h^(4/3) (eq. 3 with the hydraulic radius = depth, sheet flow); 0: frictionless."),
+                ranged({"influence_ratio", K::Float, "", "1.3", "alpha_e of the influence radius r_e = alpha_e sqrt(A_max) (eq. 9), one radius for all particles, recomputed every step; the spiky kernel reaches 2 r_e."}, 0.5, 4.0),
+                choice("walls", "\"slip\"", "Ghost particles mirrored across the [[wall]] sides (section 2(5)): slip keeps the tangential velocity, no_slip reverses it; the normal velocity is reversed in both.", {"slip", "no_slip"}),
+                {"edge_correction", K::Bool, "", "true", "Add the dry side's push at a wet/dry edge: the gradient of eq. 6 sees only the particles present, so a front particle, whose SPH depth stays near the depth behind it, misses the drop to the dry bed beyond it (measured on Ritter's dam break: the front lags the analytic one by the same ~1.3 m at every resolution without it). The term -g D h_i sum_j x_ij w_ij / |x_ij|^2 / sum_j w_ij is the eq. 6 gradient's contribution of the missing neighbours at depth 0; it vanishes on any complete, symmetric neighbourhood (interior, walls with ghosts, a lake at rest). docs/swe.md."},
+                {"ritter_dam_x", K::Float, "m", "(none)", "With ritter_depth: the scene is Ritter's dry-bed dam break (dam at x = ritter_dam_x, water on the lower-x side); summary.json gets the front-region depth error against the analytic solution (eq. 14) and the front position (docs/swe.md)."},
+                positive("ritter_depth", "m", "(none)", "h0 of the Ritter reference.")}});
+  s.push_back({"bed", false, false, "swe: the bed elevation z_b(x, y): the base (`elevation` or a `raster`), plus [[bed_hump]]s, plus [[bed_ramp]]s.",
+               {{"elevation", K::Float, "m", "0.0", "Constant base elevation."},
+                {"raster", K::String, "", "(none)", "ESRI ASCII grid (.asc; path relative to the scene file) replacing the constant base: bilinear between cell centres, clamped at the edges. Header keys ncols, nrows, xllcorner|xllcenter, yllcorner|yllcenter, cellsize, optional NODATA_value; then nrows rows of ncols values, north first. No-data cells are dry high ground: they read the raster's highest valid elevation (water runs up against them like against a bank) and no fluid particle starts on one. A missing key, a wrong cell count or a non-number is exit code 2 naming the raster's file and line."}}});
+  s.push_back({"bed_hump", true, false, "swe: a Gaussian hump added to the bed, z += height exp(-|x - centre|^2 / width^2).",
+               {{"centre", K::Vector, "m", "", "Centre (x, y).", true},
+                {"height", K::Float, "m", "", "Height (negative: a hollow).", true},
+                positive("width", "m", "", "e-folding width.", true)}});
+  s.push_back({"bed_ramp", true, false, "swe: a plane added to the bed inside the box [min, max]: z += gradient . (x - origin) (a slope starting at origin; piecewise planes by several ramps).",
+               {{"min", K::Vector, "m", "", "Lower corner of the ramp's box.", true},
+                {"max", K::Vector, "m", "", "Upper corner.", true},
+                {"origin", K::Vector, "m", "", "Point where the ramp adds nothing.", true},
+                {"gradient", K::Vector, "", "", "dz/dx, dz/dy (0.1: a 10% slope rising along x).", true}}});
+  s.push_back({"splitting", false, false, "swe: dynamic particle splitting (section 2(3), src/systems/splitting/).",
+               {{"enabled", K::Bool, "", "true", "Split particles whose area grew past area_ratio * A0 (A0 = spacing^2)."},
+                ranged({"area_ratio", K::Float, "", "1.5", "Split when A_i > area_ratio * A0 (the paper's 1.5)."}, 1.0, 100.0),
+                choice("direction", "\"gap\"", "The split direction t_i, an eigenvector of the moment matrix C_i = sum_j x_ij x_ij^T w_ij: gap (the smallest eigenvalue's: across the largest gap between the neighbours) or spread (the largest eigenvalue's, eq. 11 as printed). At a thinning front the particles stand in rows across the flow and spread splits them along the row: on Ritter's dam break its front lags the unsplit one and does not converge with resolution, while gap reproduces the paper's front (docs/swe.md).", {"gap", "spread"}),
+                ranged({"distance", K::Float, "", "0.7", "alpha_s: the children are alpha_s sqrt(A_i) apart (eq. 10)."}, 0.01, 2.0),
+                ranged({"max_particles", K::Integer, "", "(20 x the initial count)", "Cap on the particle count: when a step's splits would pass it, splitting stops with one warning and the run goes on."}, 0, std::nullopt)}});
   s.push_back({"time", false, true, "Time control.",
                {positive("end", "s", "", "Simulated end time.", true),
-                ranged({"cfl", K::Float, "", "0.2", "CFL number for the adaptive step dt = cfl h / (c0 + |v|max), also bounded by force and viscous limits."}, 1e-6, 1.0),
+                ranged({"cfl", K::Float, "", "(0.2; swe 0.5)", "CFL number for the adaptive step dt = cfl h / (c0 + |v|max), also bounded by force and viscous limits; swe: dt = cfl min sqrt(A_i) / (sqrt(g h_i) + |u_i|) (eq. 13)."}, 1e-6, 1.0),
                 non_negative("dt", "s", "0.0", "Fixed time step; 0 = adaptive."),
                 ranged({"max_steps", K::Integer, "", "0", "Stop after this many steps (0: no limit)."}, 0, std::nullopt),
                 non_negative("dt_min", "s", "1e-9", "An adaptive step below this is a numerical failure (dt collapse).")}});
@@ -135,8 +161,10 @@ std::vector<SectionSpec> build() {
                {{"min", K::Vector, "m", "", "Lower corner.", true},
                 {"max", K::Vector, "m", "", "Upper corner.", true},
                 {"velocity", K::Vector, "m/s", "(at rest)", "Initial velocity of every particle of the block."},
-                {"angular_velocity", K::Float, "1/s", "0.0", "2D: initial rigid rotation about the block's centre, v = (omega (y - yc), -omega (x - xc)) (clockwise for omega > 0; the rotating square patch), added to `velocity`."}}});
-  s.push_back({"wall", true, false, "A rigid container: `layers` of wall particles outside the box [min, max].",
+                {"angular_velocity", K::Float, "1/s", "0.0", "2D: initial rigid rotation about the block's centre, v = (omega (y - yc), -omega (x - xc)) (clockwise for omega > 0; the rotating square patch), added to `velocity`."},
+                positive("depth", "m", "(none)", "swe: the water depth of the block (one of depth and surface_elevation is required)."),
+                {"surface_elevation", K::Float, "m", "(none)", "swe: the water surface of the block; depth = surface_elevation - bed, and lattice points where that is not positive are dry (no particle): a lake over a bumpy bed."}}});
+  s.push_back({"wall", true, false, "A rigid container: `layers` of wall particles outside the box [min, max]. swe: the box's sides are mirror lines for ghost particles (layers only has to keep the domain large enough; open_top is ignored, a plan view has no top; open_ends opens an axis).",
                {{"min", K::Vector, "m", "", "Inner lower corner.", true},
                 {"max", K::Vector, "m", "", "Inner upper corner.", true},
                 ranged({"layers", K::Integer, "", "(ceil(support radius / spacing))", "Wall thickness in particle layers; layers * spacing must cover the support radius."}, 1, 16),
@@ -150,8 +178,8 @@ std::vector<SectionSpec> build() {
                 {"gradient", K::Vector, "Pa/m", "(zero)", "Pressure gradient across the box, so that a linear pressure drop continues into it."}}});
   s.push_back({"probe", true, false, "Measurements written to probes.csv (one column each).",
                {{"name", K::String, "", "", "Column name.", true},
-                choice("type", "", "pressure: kernel-interpolated (Shepard) fluid pressure at `position`; surge_front: max x of fluid particles + d/2; water_height: surface elevation of the water column standing on `position` (where the kernel-interpolated fill fraction, walls discounted, first falls below 1/2 going up; drops and wall films above a gap do not count; docs/output.md); kinetic_energy: sum of m |v|^2 / 2 over the fluid (J, per metre of depth in 2D); potential_energy: sum of -m g . x over the fluid (zero at the origin).",
-                       {"pressure", "surge_front", "water_height", "kinetic_energy", "potential_energy"}, true),
+                choice("type", "", "pressure: kernel-interpolated (Shepard) fluid pressure at `position`; surge_front: max x of fluid particles + d/2; water_height: surface elevation of the water column standing on `position` (where the kernel-interpolated fill fraction, walls discounted, first falls below 1/2 going up; drops and wall films above a gap do not count; docs/output.md); kinetic_energy: sum of m |v|^2 / 2 over the fluid (J, per metre of depth in 2D); potential_energy: sum of -m g . x over the fluid (zero at the origin); particle_count: the number of fluid particles (grows with particle splitting); front_depth: swe only, the depth of the foremost particle (largest x).",
+                       {"pressure", "surge_front", "water_height", "kinetic_energy", "potential_energy", "particle_count", "front_depth"}, true),
                 {"position", K::Vector, "m", "", "Where to measure (pressure; for water_height the base of the vertical line, which reads this height when dry)."}}});
   s.push_back({"systems", true, false,
                "Registered systems added to the method's pipeline; the scheduler places them by their declared access. Keys besides `name` are the system's parameters (see below).",

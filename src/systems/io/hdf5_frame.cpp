@@ -84,6 +84,12 @@ std::vector<FieldInfo> write_frame(const std::filesystem::path& path, const Worl
           break;
         case ColumnType::Vector: {
           auto padded = padded_vectors<D>(world.column(Component<Vector>{name}));
+          // A shallow-water scene is a plan view: its particles are drawn on the water surface,
+          // at (x, y, z_s).
+          if (D == 2 && name == "position" && world.has("surface_elevation")) {
+            auto& zs = world.column(Component<Scalar>{"surface_elevation"});
+            for (std::size_t i = 0; i < zs.size(); ++i) padded[3 * i + 2] = zs[i];
+          }
           write_dataset(file.id, name, H5T_NATIVE_DOUBLE, padded.data(), {n, 3});
           break;
         }

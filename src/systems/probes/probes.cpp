@@ -91,6 +91,16 @@ std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const Wo
         if (kind[i] == kFluid) acc.first = std::max(acc.first, x[i][0]);
       }, true);
       out.push_back(r.first + 0.5 * d);
+    } else if (probe.type == "particle_count") {
+      std::size_t count = 0;
+      for (std::size_t i = 0; i < world.size(); ++i) count += kind[i] == kFluid;
+      out.push_back(double(count));
+    } else if (probe.type == "front_depth") {  // swe: the depth of the foremost particle
+      auto& depth = world.column(Component<Scalar>{"depth"});
+      std::size_t front = world.size();
+      for (std::size_t i = 0; i < world.size(); ++i)
+        if (kind[i] == kFluid && (front == world.size() || x[i][0] > x[front][0])) front = i;
+      out.push_back(front < world.size() ? depth[front] : std::numeric_limits<double>::quiet_NaN());
     } else if (probe.type == "kinetic_energy" || probe.type == "potential_energy") {
       const bool kinetic = probe.type == "kinetic_energy";
       auto r = reduce_particles(world.size(), {0.0, 0.0}, [&](std::size_t i, auto& acc) {

@@ -13,6 +13,8 @@
 //                 Drops and particles clinging to a wall above a gap are not the column and do
 //                 not count; an isolated particle reaches f ~ 0.2. The base itself when no water
 //                 stands there; points inside walls (wall share > 0.9) are skipped.
+//   particle_count    the number of fluid particles (it grows with particle splitting)
+//   front_depth       swe: the depth of the foremost fluid particle (largest x)
 //   kinetic_energy    sum over fluid particles of m |v|^2 / 2 (J; J/m in 2D, per unit depth)
 //   potential_energy  sum over fluid particles of -m g . x (J; zero at the origin): with the
 //                     kinetic energy, the mechanical energy a sloshing tank may only lose
