@@ -20,7 +20,7 @@ import tempfile
 
 def run(binary, spacing, threads, out, extra):
     cmd = [binary, "run", "scenes/dam_break_ritter_swe.toml", "--out", out, "--quiet", "--threads", str(threads),
-           "--set", f"particles.spacing={spacing:.10g}"] + [a for s in extra for a in ("--set", s)]
+           "--set", f"particles.spacing={spacing!r}"] + [a for s in extra for a in ("--set", s)]
     subprocess.run(cmd, check=True)
     summary = json.load(open(os.path.join(out, "summary.json")))
     profile = json.load(open(os.path.join(out, "profile.json")))

@@ -3,7 +3,7 @@
 Run with ParaView's interpreter under a virtual display (rendering needs an X server here):
 
     xvfb-run -a pvpython tools/paraview_check.py OUT --expect-points N --expect-times T0,T1,...
-        [--arrays a,b,c] [--image-dir DIR] [--label NAME]
+        [--arrays a,b,c] [--image-dir DIR] [--label NAME] [--color FIELD] [--z-equals FIELD]
 
 For each reader ParaView offers for XDMF (the legacy XDMFReader, Xdmf3ReaderS and
 Xdmf3ReaderT), and for OpenDataFile (what File > Open picks), it asserts
@@ -11,7 +11,9 @@ Xdmf3ReaderT), and for OpenDataFile (what File > Open picks), it asserts
   - the point-data arrays and their component counts (vectors 3, tensors 9),
   - the time values, as written,
   - a rendered image that is not empty (pixels differ from the background),
-and saves the image as DIR/NAME_READER.png. Prints one line per reader and exits 1 on the
+and saves the image as DIR/NAME_READER.png. With --z-equals FIELD it also asserts that the
+points' z coordinate is that point array (a shallow-water run draws its particles on the water
+surface, z = surface_elevation). Prints one line per reader and exits 1 on the
 first failure, naming the reader and what it saw.
 """
 import argparse
@@ -55,6 +57,23 @@ def background_differs(png):
     return differ
 
 
+def check_z(reader, src, field):
+    """The points' z equals the point array `field` at the pipeline's time, and is not all zero."""
+    import numpy as np
+    from paraview import servermanager as sm
+    from vtkmodules.numpy_interface import dataset_adapter as dsa
+
+    data = dsa.WrapDataObject(sm.Fetch(src))
+    points, values = data.Points, data.PointData[field]
+    if hasattr(points, "Arrays"):  # a composite data set (one block per grid)
+        points = np.concatenate([np.asarray(p) for p in points.Arrays])
+        values = np.concatenate([np.asarray(v) for v in values.Arrays])
+    points, values = np.asarray(points), np.asarray(values)
+    gap = float(np.max(np.abs(points[:, 2] - values)))
+    if gap > 1e-12 or not np.any(values != 0):
+        fail(reader, f"point z differs from '{field}' by up to {gap} (or '{field}' is all zero)")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("out")
@@ -64,6 +83,8 @@ def main():
     ap.add_argument("--tensors", default="")
     ap.add_argument("--image-dir", default="")
     ap.add_argument("--label", default="run")
+    ap.add_argument("--color", default="pressure")
+    ap.add_argument("--z-equals", default="")
     a = ap.parse_args()
 
     path = os.path.join(a.out, "particles.xdmf")
@@ -91,12 +112,14 @@ def main():
             got = pdi[name].GetNumberOfComponents()
             if got != want:
                 fail(reader, f"array '{name}' has {got} components, expected {want}")
+        if a.z_equals:
+            check_z(reader, src, a.z_equals)
         view = pv.CreateRenderView()
         view.ViewSize = [640, 400]
         view.ViewTime = times[-1]
         view.OrientationAxesVisibility = 0
         display = pv.Show(src, view)
-        pv.ColorBy(display, ("POINTS", "pressure"))
+        pv.ColorBy(display, ("POINTS", a.color))
         display.RescaleTransferFunctionToDataRange(True, False)
         display.SetScalarBarVisibility(view, True)
         bounds = info.GetBounds()

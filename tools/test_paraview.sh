@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The real-client test (`make test-paraview`): short WCSPH, MPS and 3D runs opened in ParaView's
+# The real-client test (`make test-paraview`): short WCSPH, MPS, 3D and shallow-water runs opened in ParaView's
 # own readers (XDMFReader, Xdmf3ReaderS, Xdmf3ReaderT and OpenDataFile's choice) under a virtual
 # display. tools/paraview_check.py asserts point and cell counts, array names and components,
 # the frame times and a non-empty picture per reader; then `ryushi render` (PNGs, MP4, a 3D
@@ -38,7 +38,11 @@ check mps "$work/mps" 0,0.02,0.04
 "$ryushi" run scenes/dam_break_3d.toml --out "$work/wcsph_3d" --quiet --end-time 0.02 \
   --set output.interval=0.01
 check wcsph_3d "$work/wcsph_3d" 0,0.01,0.02
-echo "test-paraview: 3 runs x 4 readers passed; screenshots in $images"
+# Shallow water: the particles drawn on the water surface (z = surface_elevation), coloured by depth.
+"$ryushi" run scenes/dam_break_ritter_swe.toml --out "$work/swe" --quiet --end-time 0.1 --set output.interval=0.05
+check swe "$work/swe" 0,0.05,0.1 --arrays velocity,pressure,kind,id,depth,area,volume,surface_elevation \
+  --color depth --z-equals surface_elevation
+echo "test-paraview: 4 runs x 4 readers passed; screenshots in $images"
 
 # Pictures without ParaView: every frame and a movie, a 3D slice, and a clean refusal.
 "$ryushi" render "$work/wcsph" --movie >/dev/null

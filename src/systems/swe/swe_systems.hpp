@@ -149,9 +149,9 @@ class SweAcceleration final : public System<D> {
 // Symplectic Euler with the Manning friction implicit in |u| u (stable as h -> 0 at a wet front):
 //   u^{n+1} = (u^n + dt a) / (1 + dt g n_M^2 |u^n| / h^{4/3}),  x^{n+1} = x^n + dt u^{n+1}.
 // S_f = n_M^2 |u| u / R^{4/3} with the hydraulic radius R = h of sheet flow (the paper prints
-// n_M without the square, which is not dimensionless; Manning's law squares it). A particle that
-// crossed a wall is reflected back with its normal velocity reversed (the ghosts keep all others
-// off the wall).
+// n_M without the square, which is not dimensionless; Manning's law squares it). A particle
+// beyond a wall (one that crossed it, or a split child placed there) is mirrored back, its
+// normal velocity reversed if it still moves outward (the ghosts keep all others off the wall).
 template <int D>
 class SweIntegrate final : public System<D> {
  public:
@@ -178,9 +178,9 @@ class SweIntegrate final : public System<D> {
       for (auto& w : p_.walls) {
         const int other = 1 - w.axis;
         if (x[i][other] < w.lo || x[i][other] > w.hi) continue;
-        if (w.inward * (x[i][w.axis] - w.at) < 0 && w.inward * v[i][w.axis] < 0) {
+        if (w.inward * (x[i][w.axis] - w.at) < 0) {
           x[i][w.axis] = 2 * w.at - x[i][w.axis];
-          v[i][w.axis] = -v[i][w.axis];
+          if (w.inward * v[i][w.axis] < 0) v[i][w.axis] = -v[i][w.axis];
         }
       }
     });
