@@ -33,3 +33,5 @@ set_tests_properties("validation: the WCSPH dam break is the same with and witho
                      PROPERTIES LABELS slow COST 25)
 set_tests_properties("validation: the MPS and ISPH dam breaks are the same with and without a Verlet skin"
                      PROPERTIES LABELS slow COST 20)
+set_tests_properties("checkpoint: a run killed at random moments and resumed ends bit-identical to an unstopped run"
+                     PROPERTIES LABELS slow COST 10)

@@ -6,6 +6,7 @@ enum ExitCode : int {
   kExitInternal = 1,
   kExitBadInput = 2,
   kExitNumericalFailure = 3,
+  kExitOutputFailed = 4,  // an output file could not be written (disk full, size limit, no permission)
   kExitInterrupted = 130,
 };
 }  // namespace ryushi

@@ -41,6 +41,17 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--dump-step", run.dump_step, "Step (from 0) whose system --dump-matrix writes (default 0)")
       ->check(CLI::NonNegativeNumber);
 
+  run_cmd->add_option("--checkpoint-interval", run.checkpoint_interval,
+                      "Write OUT/checkpoint.h5 every T of simulated time (overrides [output] checkpoint_interval)")
+      ->check(CLI::NonNegativeNumber);
+
+  ResumeOptions resume;
+  auto* resume_cmd = app.add_subcommand("resume", "Continue a run from OUT/checkpoint.h5 (same scene, same result).");
+  resume_cmd->add_option("out", resume.out_dir, "The run's output directory")->required();
+  resume_cmd->add_option("--end-time", resume.end_time, "Run on to this time instead (s)");
+  resume_cmd->add_option("--threads", resume.threads, "Worker threads (default: all cores)")->check(CLI::PositiveNumber);
+  resume_cmd->add_flag("--quiet", resume.quiet, "No progress output and no profile table");
+
   std::string check_path;
   std::vector<std::string> check_sets;
   auto* check_cmd = app.add_subcommand("check", "Validate a scene file without running it.");
@@ -112,6 +123,7 @@ int main(int argc, char** argv) {
 
   spdlog::set_pattern("[%H:%M:%S] %v");
   if (*run_cmd) return run_scene(run);
+  if (*resume_cmd) return resume_run(resume);
   if (*check_cmd) return check_scene(check_path, check_sets);
   if (*patch_cmd) {
     try {

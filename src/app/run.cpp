@@ -11,6 +11,8 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <set>
 #include <sstream>
 
 #include "app/exit_codes.hpp"
@@ -20,6 +22,7 @@
 #include "methods/method.hpp"
 #include "scene/scene.hpp"
 #include "systems/io/atomic_file.hpp"
+#include "systems/io/checkpoint.hpp"
 #include "systems/io/hdf5_frame.hpp"
 #include "systems/io/xdmf.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
@@ -128,6 +131,15 @@ Diagnostics diagnose(const World<D>& w, double rho0) {
   return d;
 }
 
+std::vector<std::string> with_end_time(const RunOptions& opt);
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 std::string probes_csv(const std::vector<ProbeSpec>& probes, const std::vector<std::vector<double>>& rows) {
   std::ostringstream out;
   out.precision(10);
@@ -144,7 +156,11 @@ std::string probes_csv(const std::vector<ProbeSpec>& probes, const std::vector<s
 template <int D>
 class Runner {
  public:
-  Runner(const Scene& scene, const RunOptions& opt) : scene_(scene), opt_(opt), profiler_(opt.trace) {}
+  // resume: the checkpoint to continue from (empty: a fresh run).
+  Runner(const Scene& scene, const RunOptions& opt, fs::path resume = {})
+      : scene_(scene), opt_(opt), profiler_(opt.trace), resume_(std::move(resume)) {
+    checkpoint_interval_ = opt.checkpoint_interval ? *opt.checkpoint_interval : scene.checkpoint_interval;
+  }
 
   // Everything that can reject the input, before any file is written.
   void prepare() {
@@ -169,6 +185,7 @@ class Runner {
       }
     res_.ensure(resources::dt) = scene_.fixed_dt > 0 ? scene_.fixed_dt : method.first_dt;
     res_.ensure(resources::dt_chosen) = res_.get(resources::dt);
+    if (!resume_.empty()) restore();
     HealthCheck<D> h;
     h.density_may_vanish = density_may_vanish_;
     h.run(world_, context_.domain);
@@ -180,11 +197,19 @@ class Runner {
   int run() {
     out_ = opt_.out_dir.empty() ? fs::path("out") / scene_.name : fs::path(opt_.out_dir);
     fs::create_directories(out_ / "frames");
-    for (auto& e : fs::directory_iterator(out_ / "frames"))  // a previous run's frames
-      if (e.path().extension() == ".h5" || e.path().extension() == ".tmp") fs::remove(e.path());
+    // A fresh run removes a previous run's frames; a resumed one those written after its
+    // checkpoint (a killed run may have got further).
+    std::set<std::string> kept;
+    for (auto& f : frames_) kept.insert(fs::path(f.file).filename().string());
+    for (auto& e : fs::directory_iterator(out_ / "frames"))
+      if ((e.path().extension() == ".h5" && !kept.count(e.path().filename().string())) || e.path().extension() == ".tmp")
+        fs::remove(e.path());
     fs::remove(out_ / "trace.json");
     wall_start_ = std::chrono::steady_clock::now();
-    initial_ = diagnose(world_, context_.rho0);
+    if (resume_.empty()) {
+      initial_ = diagnose(world_, context_.rho0);
+      next_checkpoint_ = checkpoint_interval_;
+    }
     slot_output_ = profiler_.slot("output");
     slot_probes_ = profiler_.slot("probes");
     slot_reorder_ = profiler_.slot("reorder_by_cell");
@@ -198,8 +223,14 @@ class Runner {
     int code = kExitDone;
     Progress progress(scene_.end_time, opt_.quiet);
     try {
-      sample_probes_now();
-      write_output();
+      if (resume_.empty()) {
+        sample_probes_now();
+        write_output();
+      } else {
+        write_text_atomic(out_ / "particles.xdmf", xdmf_document(frames_));
+        if (!scene_.probes.empty()) write_text_atomic(out_ / "probes.csv", probes_csv(scene_.probes, probe_rows_));
+        if (!opt_.quiet) spdlog::info("resumed at t = {:.6g} s, step {}, frame {}", time_, step_, frames_.size());
+      }
       while (time_ < scene_.end_time * (1 - 1e-12)) {
         if (scene_.max_steps > 0 && step_ >= scene_.max_steps) break;
         if (g_interrupted) {
@@ -211,6 +242,7 @@ class Runner {
         advance();
         if (time_ >= next_probe_ * (1 - 1e-12)) sample_probes_now();
         if (time_ >= next_output_ * (1 - 1e-12)) write_output();
+        if (checkpoint_interval_ > 0 && time_ >= next_checkpoint_ * (1 - 1e-12)) write_checkpoint_now();
         progress.update(time_, step_);
       }
       if (frames_.empty() || frames_.back().time < time_) write_output();
@@ -218,6 +250,10 @@ class Runner {
       status = "failed";
       code = kExitNumericalFailure;
       message = e.what();
+    } catch (const OutputError& e) {
+      status = "failed";
+      code = kExitOutputFailed;
+      message = std::string("could not write the output: ") + e.what();
     } catch (const std::exception& e) {
       // An internal error: still leave a summary that says what happened, then report it.
       progress.finish();
@@ -225,8 +261,14 @@ class Runner {
       throw;
     }
     progress.finish();
-    finish(status, message);
+    try {
+      finish(status, message);
+    } catch (const OutputError& e) {  // the disk is still full: the message goes to stderr only
+      std::fprintf(stderr, "ryushi: %s\n", e.what());
+    }
     if (code == kExitNumericalFailure) std::fprintf(stderr, "ryushi: numerical failure: %s\n", message.c_str());
+    if (code == kExitOutputFailed)
+      std::fprintf(stderr, "ryushi: %s (frames and the checkpoint written before are whole)\n", message.c_str());
     if (code == kExitInterrupted) std::fprintf(stderr, "ryushi: %s\n", message.c_str());
     return code;
   }
@@ -238,13 +280,15 @@ class Runner {
     // (which keeps WCSPH's each-pair-once pass from running in parallel blocks).
     if (scene_.reorder_interval > 0 && step_ > 0 && (step_ == 1 || step_ % scene_.reorder_interval == 0)) {
       Profiler::Scope t(profiler_, slot_reorder_);
-      auto order = res_.get(cell_grid_resource<D>).sorted();
+      std::span<const std::uint32_t> order = res_.get(cell_grid_resource<D>).sorted();
+      if (!restored_order_.empty()) order = restored_order_;  // the first step after a resume
       if (order.size() == world_.size()) {
         CommandBuffer<D> cb;
         cb.permute({order.begin(), order.end()});
         cb.apply(world_);
       }
     }
+    restored_order_.clear();
     double& dt = res_.get(resources::dt);
     if (scene_.fixed_dt > 0) dt = scene_.fixed_dt;
     if (!(dt >= scene_.dt_min))
@@ -314,6 +358,60 @@ class Runner {
     CommandBuffer<D> cb;
     cb.erase(std::move(gone));
     cb.apply(world_);
+  }
+
+  Checkpoint checkpoint_state() const {
+    Checkpoint c;
+    auto& k = c.clock;
+    k.time = time_, k.step = step_, k.dt = res_.get(resources::dt), k.dt_chosen = res_.get(resources::dt_chosen);
+    k.next_output = next_output_, k.next_probe = next_probe_, k.next_checkpoint = next_checkpoint_;
+    k.initial_fluid_mass = initial_.fluid_mass, k.initial_fluid_volume = initial_.fluid_volume;
+    k.removed = (long long)removed_, k.removed_mass = removed_mass_;
+    c.scene.path = fs::absolute(scene_.path).string();
+    c.scene.text = read_file(scene_.path);
+    c.scene.overrides = with_end_time(opt_);
+    c.scene.version = "ryushi 0.1.0";
+    c.scene.dimension = D;
+    c.frames = frames_;
+    c.probe_rows = probe_rows_;
+    auto order = res_.get(cell_grid_resource<D>).sorted();
+    c.cell_order.assign(order.begin(), order.end());
+    for (auto& system : scheduler_->pipeline()) c.system_states.push_back({system->name(), system->checkpoint_state(world_, res_)});
+    return c;
+  }
+
+  void write_checkpoint_now() {
+    Profiler::Scope t(profiler_, slot_output_);
+    next_checkpoint_ = (std::floor(time_ / checkpoint_interval_ + 1e-9) + 1) * checkpoint_interval_;
+    write_checkpoint<D>(out_ / "checkpoint.h5", world_, checkpoint_state());
+  }
+
+  // The state of the checkpoint replaces the freshly built world and the driver's clock.
+  void restore() {
+    auto c = read_checkpoint_header(resume_);
+    restore_checkpoint_columns<D>(resume_, world_);
+    auto& k = c.clock;
+    time_ = k.time, step_ = k.step;
+    res_.get(resources::dt) = k.dt;
+    res_.get(resources::dt_chosen) = k.dt_chosen;
+    res_.get(resources::time) = time_;
+    res_.get(resources::step) = step_;
+    next_output_ = k.next_output, next_probe_ = k.next_probe, next_checkpoint_ = k.next_checkpoint;
+    initial_.fluid_mass = k.initial_fluid_mass, initial_.fluid_volume = k.initial_fluid_volume;
+    removed_ = std::size_t(k.removed), removed_mass_ = k.removed_mass;
+    frames_ = c.frames;
+    probe_rows_ = c.probe_rows;
+    restored_order_ = c.cell_order;
+    auto& pipeline = scheduler_->pipeline();
+    if (c.system_states.size() != pipeline.size())
+      throw SceneError(resume_.string() + ": the checkpoint's pipeline has " + std::to_string(c.system_states.size()) +
+                       " systems, this build's " + std::to_string(pipeline.size()));
+    for (std::size_t k = 0; k < pipeline.size(); ++k) {
+      if (c.system_states[k].first != pipeline[k]->name())
+        throw SceneError(resume_.string() + ": system " + std::to_string(k) + " is '" + c.system_states[k].first +
+                         "' in the checkpoint, '" + pipeline[k]->name() + "' here");
+      pipeline[k]->restore_state(world_, res_, c.system_states[k].second);
+    }
   }
 
   void sample_probes_now() {
@@ -450,6 +548,9 @@ class Runner {
   std::size_t removed_ = 0;  // fluid particles erased by outflow = "remove"
   double removed_mass_ = 0;
   std::size_t slot_output_ = 0, slot_probes_ = 0, slot_reorder_ = 0, slot_health_ = 0;
+  fs::path resume_;
+  std::vector<std::uint32_t> restored_order_;
+  double checkpoint_interval_ = 0, next_checkpoint_ = 0;
   std::chrono::steady_clock::time_point wall_start_;
 };
 
@@ -464,15 +565,18 @@ std::vector<std::string> with_end_time(const RunOptions& opt) {
 }
 
 template <int D>
-int run_dim(const Scene& scene, const RunOptions& opt) {
-  Runner<D> runner(scene, opt);
+int run_dim(const Scene& scene, const RunOptions& opt, const fs::path& resume = {}) {
+  Runner<D> runner(scene, opt, resume);
   runner.prepare();
   return runner.run();
 }
 
 }  // namespace
 
-int run_scene(const RunOptions& opt) {
+namespace {
+// Loads the scene and runs it (continuing from the checkpoint `resume` when given) with the
+// thread count and signal handlers, mapping failures to the exit codes of app/exit_codes.hpp.
+int run_loaded(const RunOptions& opt, const fs::path& resume = {}, int checkpoint_dimension = 0) {
   std::unique_ptr<tbb::global_control> threads;
   if (opt.threads > 0)
     threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, opt.threads);
@@ -482,10 +586,18 @@ int run_scene(const RunOptions& opt) {
   int code = kExitInternal;
   try {
     Scene scene = load_scene(opt.scene, with_end_time(opt));
-    code = scene.dimension == 2 ? run_dim<2>(scene, opt) : run_dim<3>(scene, opt);
+    if (checkpoint_dimension && scene.dimension != checkpoint_dimension)
+      throw SceneError(resume.string() + ": the checkpoint is of another dimension");
+    code = scene.dimension == 2 ? run_dim<2>(scene, opt, resume) : run_dim<3>(scene, opt, resume);
   } catch (const SceneError& e) {
     std::fprintf(stderr, "ryushi: %s\n", e.what());
     code = kExitBadInput;
+  } catch (const OutputError& e) {
+    std::fprintf(stderr, "ryushi: could not write the output: %s\n", e.what());
+    code = kExitOutputFailed;
+  } catch (const std::filesystem::filesystem_error& e) {
+    std::fprintf(stderr, "ryushi: could not write the output: %s\n", e.what());
+    code = kExitOutputFailed;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ryushi: internal error: %s\n", e.what());
     code = kExitInternal;
@@ -493,6 +605,33 @@ int run_scene(const RunOptions& opt) {
   std::signal(SIGINT, old_int);
   std::signal(SIGTERM, old_term);
   return code;
+}
+}  // namespace
+
+int run_scene(const RunOptions& opt) { return run_loaded(opt); }
+
+int resume_run(const ResumeOptions& ro) {
+  const fs::path file = fs::path(ro.out_dir) / "checkpoint.h5";
+  Checkpoint c;
+  try {
+    if (!fs::exists(file))
+      throw std::runtime_error(file.string() + ": no checkpoint (run with [output] checkpoint_interval or --checkpoint-interval)");
+    c = read_checkpoint_header(file);
+    if (!fs::exists(c.scene.path)) throw std::runtime_error(file.string() + ": the scene file " + c.scene.path + " is gone");
+    if (read_file(c.scene.path) != c.scene.text)
+      throw std::runtime_error(file.string() + ": the scene file " + c.scene.path + " changed since the checkpoint");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ryushi: %s\n", e.what());
+    return kExitBadInput;
+  }
+  RunOptions opt;
+  opt.scene = c.scene.path;
+  opt.out_dir = ro.out_dir;
+  opt.threads = ro.threads;
+  opt.quiet = ro.quiet;
+  opt.sets = c.scene.overrides;  // the original run's, its end time included
+  if (ro.end_time) opt.end_time = ro.end_time;
+  return run_loaded(opt, file, c.scene.dimension);
 }
 
 int check_scene(const std::string& path, const std::vector<std::string>& sets) {

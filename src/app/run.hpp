@@ -16,10 +16,21 @@ struct RunOptions {
   bool quiet = false;
   std::string dump_matrix_dir;  // write the pressure system of step dump_step here (implicit methods)
   long long dump_step = 0;
+  std::optional<double> checkpoint_interval;  // overrides [output] checkpoint_interval
+};
+
+// `ryushi resume OUT`: continues the run whose checkpoint is OUT/checkpoint.h5, with the scene
+// and overrides it was started with (the scene file must be unchanged); end_time extends it.
+struct ResumeOptions {
+  std::string out_dir;
+  int threads = 0;
+  std::optional<double> end_time;
+  bool quiet = false;
 };
 
 // Runs a scene; returns the exit code (app/exit_codes.hpp). Messages go to stderr/stdout.
 int run_scene(const RunOptions& options);
+int resume_run(const ResumeOptions& options);
 // Validates a scene (and builds its pipeline without running it); returns the exit code.
 int check_scene(const std::string& scene, const std::vector<std::string>& sets);
 

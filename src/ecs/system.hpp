@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "ecs/access.hpp"
 #include "ecs/world.hpp"
@@ -71,6 +72,11 @@ class System {
   // (initial conditions) and create resources.
   virtual void initialise(World<D>&, Resources&) {}
   virtual void run(SystemContext<D>& ctx) = 0;
+  // Checkpoints: what a system keeps between steps that no column holds (a Verlet list's
+  // reference positions), as numbers, and its restore after the columns are back. Systems that
+  // keep nothing leave both alone.
+  virtual std::vector<double> checkpoint_state(const World<D>&, const Resources&) const { return {}; }
+  virtual void restore_state(const World<D>&, Resources&, std::span<const double>) {}
 };
 
 template <int D>

@@ -104,6 +104,16 @@ class World {
     ++structure_version_;
   }
 
+  // Checkpoint restore: n particles, every column resized (contents to be overwritten), and the
+  // id counter as it was, so that later appends give the same ids as the uninterrupted run.
+  void restore_size(std::size_t n, std::int32_t next_id) {
+    size_ = n;
+    next_id_ = next_id;
+    ++structure_version_;
+    for (auto& [_, col] : columns_) col->resize(size_);
+  }
+  std::int32_t next_id() const { return next_id_; }
+
   std::size_t bytes_per_particle() const {
     std::size_t b = 0;
     for (auto& [_, col] : columns_) b += col->bytes_per_element();

@@ -393,6 +393,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   if (sc.output_interval <= 0) sc.output_interval = sc.end_time / 20.0;
   sc.probe_interval = root["output"]["probe_interval"].value_or(sc.output_interval / 10.0);
   if (sc.probe_interval <= 0) sc.probe_interval = sc.output_interval / 10.0;
+  sc.checkpoint_interval = *get("output", "checkpoint_interval").value<double>();
   for (auto& e : *root["output"]["fields"].as_array()) sc.output_fields.push_back(*e.value<std::string>());
   if (swe) {
     auto& w = sc.swe;

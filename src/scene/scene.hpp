@@ -106,7 +106,7 @@ struct Scene {
   SweSpec swe;
   double end_time = 0, cfl = 0.2, fixed_dt = 0, dt_min = 1e-9;
   long long max_steps = 0;
-  double output_interval = 0, probe_interval = 0;
+  double output_interval = 0, probe_interval = 0, checkpoint_interval = 0;
   std::vector<std::string> output_fields;
   std::vector<FluidBlock> fluid;
   std::vector<WallBox> walls;

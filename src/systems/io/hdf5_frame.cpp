@@ -1,5 +1,7 @@
 #include "systems/io/hdf5_frame.hpp"
 
+#include "systems/io/hdf5_image.hpp"
+
 #include <hdf5.h>
 
 #include <cstdint>
@@ -65,12 +67,12 @@ std::vector<double> padded_tensors(const std::vector<Mat<D>>& m) {
 template <int D>
 std::vector<FieldInfo> write_frame(const std::filesystem::path& path, const World<D>& world,
                                    const std::vector<std::string>& extra, double time, long long step) {
-  auto tmp = path;
-  tmp += ".tmp";
   std::vector<FieldInfo> written;
   {
-    H5Handle file{H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
-    if (file.id < 0) throw std::runtime_error(tmp.string() + ": cannot create HDF5 file");
+    Hdf5Image image(path);
+    struct {
+      hid_t id;
+    } file{image.id()};
     const hsize_t n = world.size();
     auto fields = default_frame_fields();
     for (auto& e : extra)
@@ -111,9 +113,8 @@ std::vector<FieldInfo> write_frame(const std::filesystem::path& path, const Worl
     write_dataset(file.id, "connectivity", H5T_NATIVE_INT32, vertices.data(), {n});
     write_attribute(file.id, "time", H5T_NATIVE_DOUBLE, time);
     write_attribute(file.id, "step", H5T_NATIVE_LLONG, step);
-    check(H5Fflush(file.id, H5F_SCOPE_GLOBAL), "flush");
+    image.save();
   }
-  std::filesystem::rename(tmp, path);
   return written;
 }
 

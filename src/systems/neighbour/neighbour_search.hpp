@@ -98,6 +98,33 @@ class NeighbourSearch final : public System<D> {
         candidates_.bytes() + scratch_.size() * sizeof(std::uint32_t) + reference_.size() * sizeof(Vec<D>);
   }
 
+  // A Verlet list lives on from its last build, and the driver reorders particles with that
+  // build's cell grid: a resumed run must find both as the stopped run left them. The state is
+  // whether the list is still valid for the world as it stands, and the positions of the last
+  // build, from which the same candidates and grid are rebuilt. (Without a skin the grid is
+  // rebuilt every step; the driver keeps its order itself.)
+  std::vector<double> checkpoint_state(const World<D>& world, const Resources&) const override {
+    std::vector<double> state;
+    if (skin_ <= 0 || candidates_.builds == 0) return state;
+    state.push_back(world.structure_version() == version_ ? 1.0 : 0.0);
+    for (auto& p : reference_) state.insert(state.end(), p.data(), p.data() + D);
+    return state;
+  }
+  void restore_state(const World<D>& world, Resources& res, std::span<const double> state) override {
+    if (skin_ <= 0 || state.empty()) return;
+    reference_.resize((state.size() - 1) / D);
+    for (std::size_t i = 0; i < reference_.size(); ++i)
+      for (int a = 0; a < D; ++a) reference_[i][a] = state[1 + i * D + a];
+    std::span<const std::int32_t> kind;
+    if (skip_kind_ >= 0) kind = world.column(components::kind);
+    build_neighbour_list<D>(res.get(domain_resource<D>), radius_ + skin_, std::span<const Vec<D>>(reference_),
+                            res.ensure(cell_grid_resource<D>), candidates_, kind, skip_kind_);
+    if (state[0] == 1.0)
+      version_ = world.structure_version();
+    else
+      candidates_.builds = 0;  // the stopped run would have rebuilt at its next step
+  }
+
  private:
   double radius_;
   std::int32_t skip_kind_;

@@ -1,0 +1,173 @@
+// Never lose a run (issue 9): a run killed with SIGKILL at random moments and resumed from its
+// checkpoint, again and again, ends bit-identical to a run that was never stopped (same thread
+// count), and every frame on disk opens. Resume refuses a missing checkpoint and a changed scene.
+#include <doctest/doctest.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <random>
+#include <thread>
+
+#include "app/exit_codes.hpp"
+#include "h5_read.hpp"
+#include "test_util.hpp"
+
+extern char** environ;
+
+using namespace ryushi;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Starts `args` (argv[0] the binary) with output to /dev/null; returns the pid.
+pid_t spawn(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = -1;
+  REQUIRE(posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) == 0);
+  posix_spawn_file_actions_destroy(&actions);
+  return pid;
+}
+
+// Waits up to `seconds` for pid; kills it with SIGKILL if still running. Returns the exit code,
+// or -1 when it was killed.
+int wait_or_kill(pid_t pid, double seconds) {
+  auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  int status = 0;
+  while (std::chrono::steady_clock::now() < end) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : -2;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  kill(pid, SIGKILL);
+  waitpid(pid, &status, 0);
+  return -1;
+}
+
+std::vector<fs::path> frames_of(const fs::path& out) {
+  std::vector<fs::path> f;
+  for (auto& e : fs::directory_iterator(out / "frames")) f.push_back(e.path());
+  std::sort(f.begin(), f.end());
+  return f;
+}
+
+}  // namespace
+
+TEST_CASE("checkpoint: a run killed at random moments and resumed ends bit-identical to an unstopped run") {
+  const std::string bin = RYUSHI_BINARY;
+  auto dir = test::scratch("checkpoint_kill");
+  const std::vector<std::string> common{"--set", "particles.spacing=0.01", "--end-time", "0.3", "--threads", "2",
+                                        "--quiet", "--checkpoint-interval", "0.02"};
+  auto run_args = [&](const fs::path& out) {
+    std::vector<std::string> a{bin, "run", test::scene_path("dam_break_2d.toml"), "--out", out.string()};
+    a.insert(a.end(), common.begin(), common.end());
+    return a;
+  };
+  const fs::path full = dir / "full", part = dir / "part";
+  REQUIRE(wait_or_kill(spawn(run_args(full)), 120) == kExitDone);
+
+  // Each kill comes at a random moment after the run has written its first checkpoint (before
+  // it there is nothing to resume: a user would start the run again).
+  std::mt19937 random(20261123);
+  std::uniform_real_distribution<double> moment(0.05, 1.0);
+  auto until_checkpoint = [&](pid_t pid) {
+    for (int k = 0; k < 6000 && !fs::exists(part / "checkpoint.h5"); ++k) {
+      int status = 0;
+      if (waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : -2;
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return -3;  // still running
+  };
+  pid_t pid = spawn(run_args(part));
+  int code = until_checkpoint(pid);
+  REQUIRE(code == -3);
+  code = wait_or_kill(pid, moment(random));
+  int kills = code == -1;
+  for (int attempt = 0; code != kExitDone && attempt < 20; ++attempt) {
+    // After three kills, let it finish.
+    const double budget = kills < 3 ? moment(random) : 120.0;
+    code = wait_or_kill(spawn({bin, "resume", part.string(), "--threads", "2", "--quiet"}), budget);
+    kills += code == -1;
+    REQUIRE((code == -1 || code == kExitDone));
+  }
+  MESSAGE(kills << " kills");
+  CHECK(kills >= 2);
+  REQUIRE(code == kExitDone);
+
+  auto a = frames_of(full), b = frames_of(part);
+  REQUIRE(a.size() == b.size());
+  REQUIRE(a.size() == 16);
+  for (std::size_t k = 0; k < a.size(); ++k)
+    for (const char* name : {"position", "velocity", "pressure", "density", "id", "kind"}) {
+      auto x = test::read_dataset(a[k], name).values, y = test::read_dataset(b[k], name).values;
+      REQUIRE_MESSAGE(x == y, b[k] << ": " << name << " differs from the unstopped run");
+    }
+  auto sa = test::read_text(full / "summary.json"), sb = test::read_text(part / "summary.json");
+  CHECK(test::json_number(sa, "steps") == test::json_number(sb, "steps"));
+  CHECK(test::json_number(sb, "fluid_mass_relative_change") == 0);
+  // The probes and the XDMF collection cover the whole run, without a gap or a repeated row.
+  CHECK(test::read_text(full / "probes.csv") == test::read_text(part / "probes.csv"));
+  CHECK(test::read_text(full / "particles.xdmf") == test::read_text(part / "particles.xdmf"));
+}
+
+TEST_CASE("checkpoint: resume refuses a missing checkpoint and a scene changed since, with exit code 2") {
+  const std::string bin = RYUSHI_BINARY;
+  auto dir = test::scratch("checkpoint_refusals");
+  auto r = test::run_command(bin + " resume " + (dir / "nothing").string());
+  CHECK(r.code == kExitBadInput);
+  CHECK_MESSAGE(r.output.find("no checkpoint") != std::string::npos, r.output);
+
+  auto scene = dir / "scene.toml";
+  test::write_text(scene, test::block_scene("[0.3, 0.3]", "[0.5, 0.5]", 0.02,
+                                            "[[wall]]\nmin = [0.3, 0.3]\nmax = [0.7, 0.7]\n[output]\ncheckpoint_interval = 0.01\n"));
+  auto out = (dir / "out").string();
+  REQUIRE(test::run_command(bin + " run " + scene.string() + " --out " + out + " --quiet").code == kExitDone);
+  REQUIRE(fs::exists(dir / "out" / "checkpoint.h5"));
+  // Extending a finished run with --end-time continues it.
+  auto more = test::run_command(bin + " resume " + out + " --end-time 0.03 --quiet");
+  CHECK(more.code == kExitDone);
+  CHECK(test::json_number(test::read_text(dir / "out" / "summary.json"), "simulated_time") == doctest::Approx(0.03));
+  test::write_text(scene, test::read_text(scene) + "\n# edited\n");
+  auto changed = test::run_command(bin + " resume " + out + " --quiet");
+  CHECK(changed.code == kExitBadInput);
+  CHECK_MESSAGE(changed.output.find("changed since the checkpoint") != std::string::npos, changed.output);
+}
+
+TEST_CASE("checkpoint: a full disk stops the run with exit code 4 and a clear message, the frames so far whole") {
+  const std::string bin = RYUSHI_BINARY;
+  auto dir = test::scratch("output_full");
+  auto out = dir / "out";
+  // A 160 KiB file-size limit (ulimit -f; ryushi ignores SIGXFSZ, so writes fail with EFBIG):
+  // this scene's frames (99 KB) fit, its checkpoint (every column, 256 KB) does not.
+  auto r = test::run_command("bash -c 'ulimit -f 160; exec " + bin + " run " + test::scene_path("dam_break_2d.toml") +
+                             " --out " + out.string() +
+                             " --quiet --set particles.spacing=0.02 --end-time 0.05 --checkpoint-interval 0.02'");
+  CHECK(r.code == kExitOutputFailed);
+  CHECK_MESSAGE(r.output.find("could not write the output") != std::string::npos, r.output);
+  CHECK_MESSAGE(r.output.find("checkpoint.h5.tmp: write failed: File too large") != std::string::npos, r.output);
+  CHECK(!fs::exists(out / "checkpoint.h5.tmp"));
+  auto frames = frames_of(out);
+  REQUIRE(frames.size() >= 2);  // t = 0, 0.0025, ... up to the first checkpoint
+  for (auto& f : frames) {
+    CHECK(f.extension() == ".h5");
+    CHECK(!test::read_dataset(f, "position").values.empty());
+  }
+  auto summary = test::read_text(out / "summary.json");
+  CHECK(test::json_raw(summary, "status") == "failed");
+
+  // An output directory that cannot be made: exit 4 before any step.
+  test::write_text(dir / "blocked" / "frames", "a file where the frames directory should be");
+  auto blocked = test::run_command(bin + " run " + test::scene_path("dam_break_2d.toml") + " --out " +
+                                   (dir / "blocked").string() + " --quiet --end-time 0.01");
+  CHECK(blocked.code == kExitOutputFailed);
+  CHECK_MESSAGE(blocked.output.find("could not write the output") != std::string::npos, blocked.output);
+}
