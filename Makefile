@@ -10,7 +10,7 @@ PY_PACKAGES := python3-numpy python3-h5py python3-matplotlib
 PV_PACKAGES := paraview python3-paraview xvfb xauth ffmpeg
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps py-deps pv-deps build run test test-paraview test-sanitize bench plots docs clean
+.PHONY: all deps py-deps pv-deps build run test test-paraview test-sanitize bench plots docs fuzz clean
 
 all: build
 
@@ -73,6 +73,18 @@ plots: build py-deps
 	mkdir -p docs/img
 	test -f out/dam_break_2d/probes.csv || $(BUILD)/ryushi run scenes/dam_break_2d.toml --out out/dam_break_2d --quiet
 	/usr/bin/python3 tools/plot_dam_break.py out/dam_break_2d docs/img/dam_break_front.png
+
+# libFuzzer on the scene loader (fuzz/README.md); new coverage is merged into fuzz/corpus/.
+FUZZ_SECONDS ?= 600
+fuzz: deps
+	@dpkg -s clang >/dev/null 2>&1 || { $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq clang; }
+	cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_COMPILER=clang -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRYUSHI_FUZZ=ON
+	cmake --build build-fuzz -j$(JOBS) --target ryushi_scene_fuzzer
+	mkdir -p fuzz/corpus-new fuzz/crashes
+	build-fuzz/ryushi_scene_fuzzer -max_total_time=$(FUZZ_SECONDS) -timeout=10 -max_len=8192 -dict=fuzz/toml.dict \
+	  -artifact_prefix=fuzz/crashes/ -print_final_stats=1 fuzz/corpus-new fuzz/corpus
+	build-fuzz/ryushi_scene_fuzzer -merge=1 fuzz/corpus fuzz/corpus-new
+	rm -rf fuzz/corpus-new
 
 docs: build
 	$(BUILD)/ryushi keys --markdown > docs/scenes.md
