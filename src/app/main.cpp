@@ -10,6 +10,7 @@
 #include "app/render.hpp"
 #include "app/run.hpp"
 #include "app/solve.hpp"
+#include "app/sweep.hpp"
 #include "scene/schema.hpp"
 #include "verification/free_surface_check.hpp"
 #include "verification/patch_test.hpp"
@@ -51,6 +52,18 @@ int main(int argc, char** argv) {
   resume_cmd->add_option("--end-time", resume.end_time, "Run on to this time instead (s)");
   resume_cmd->add_option("--threads", resume.threads, "Worker threads (default: all cores)")->check(CLI::PositiveNumber);
   resume_cmd->add_flag("--quiet", resume.quiet, "No progress output and no profile table");
+
+  SweepOptions sweep;
+  auto* sweep_cmd = app.add_subcommand(
+      "sweep", "Run the cartesian product of --vary overrides into DIR/<run>/, collect DIR/sweep.csv and draw DIR/sweep.png.");
+  sweep_cmd->add_option("scene", sweep.scene, "Scene file (TOML)")->required();
+  sweep_cmd->add_option("--vary", sweep.vary, "section.key=v1,v2,... (repeatable; the product of all)")->required();
+  sweep_cmd->add_option("--out", sweep.out_dir, "Output directory (resumable: completed runs are kept)")->required();
+  sweep_cmd->add_option("--set", sweep.sets, "A fixed override for every run (repeatable)");
+  sweep_cmd->add_option("--jobs", sweep.jobs, "Runs at a time (default 1)")->check(CLI::PositiveNumber);
+  sweep_cmd->add_option("--threads", sweep.threads, "Threads per run (default 1)")->check(CLI::PositiveNumber);
+  sweep_cmd->add_option("--error", sweep.error, "summary.json diagnostics key sweep.png plots (default: the first *_error)");
+  sweep_cmd->add_flag("--quiet", sweep.quiet, "No log lines");
 
   std::string check_path;
   std::vector<std::string> check_sets;
@@ -124,6 +137,7 @@ int main(int argc, char** argv) {
   spdlog::set_pattern("[%H:%M:%S] %v");
   if (*run_cmd) return run_scene(run);
   if (*resume_cmd) return resume_run(resume);
+  if (*sweep_cmd) return run_sweep(sweep);
   if (*check_cmd) return check_scene(check_path, check_sets);
   if (*patch_cmd) {
     try {
