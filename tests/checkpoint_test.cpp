@@ -171,3 +171,33 @@ TEST_CASE("checkpoint: a full disk stops the run with exit code 4 and a clear me
   CHECK(blocked.code == kExitOutputFailed);
   CHECK_MESSAGE(blocked.output.find("could not write the output") != std::string::npos, blocked.output);
 }
+
+TEST_CASE("checkpoint: SIGINT stops a checkpointed run with a checkpoint where it stopped, and resume finishes it") {
+  const std::string bin = RYUSHI_BINARY;
+  auto dir = test::scratch("checkpoint_sigint");
+  const fs::path full = dir / "full", part = dir / "part";
+  auto args = [&](const fs::path& out) {
+    return std::vector<std::string>{bin, "run", test::scene_path("dam_break_2d.toml"), "--out", out.string(),
+                                    "--set", "particles.spacing=0.01", "--end-time", "0.3", "--threads", "2",
+                                    "--quiet", "--checkpoint-interval", "0.1"};
+  };
+  REQUIRE(wait_or_kill(spawn(args(full)), 120) == kExitDone);
+  pid_t pid = spawn(args(part));
+  for (int k = 0; k < 6000 && !fs::exists(part / "frames" / "frame_00002.h5"); ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  REQUIRE(WIFEXITED(status));
+  REQUIRE(WEXITSTATUS(status) == kExitInterrupted);
+  // The checkpoint is where the run stopped (after frame 2, t = 0.03 s), not at a multiple of 0.1.
+  const double stopped = test::json_number(test::read_text(part / "summary.json"), "simulated_time");
+  CHECK(stopped < 0.3);
+  CHECK(stopped >= 0.03);
+  CHECK(test::read_dataset(part / "checkpoint.h5", "clock").values.at(0) == doctest::Approx(stopped).epsilon(1e-9));
+  REQUIRE(wait_or_kill(spawn({bin, "resume", part.string(), "--threads", "2", "--quiet"}), 120) == kExitDone);
+  auto a = frames_of(full), b = frames_of(part);
+  REQUIRE(a.size() == b.size());
+  for (std::size_t k = 0; k < a.size(); ++k)
+    REQUIRE(test::read_dataset(a[k], "position").values == test::read_dataset(b[k], "position").values);
+}

@@ -35,3 +35,5 @@ set_tests_properties("validation: the MPS and ISPH dam breaks are the same with 
                      PROPERTIES LABELS slow COST 20)
 set_tests_properties("checkpoint: a run killed at random moments and resumed ends bit-identical to an unstopped run"
                      PROPERTIES LABELS slow COST 10)
+set_tests_properties("checkpoint: SIGINT stops a checkpointed run with a checkpoint where it stopped, and resume finishes it"
+                     PROPERTIES LABELS slow COST 8)

@@ -237,6 +237,8 @@ class Runner {
           status = "interrupted";
           code = kExitInterrupted;
           message = "interrupted by signal at t = " + std::to_string(time_) + " s";
+          // A checkpointed run stops where `ryushi resume` can continue it.
+          if (checkpoint_interval_ > 0 && step_ > 0) write_checkpoint_now();
           break;
         }
         advance();
