@@ -20,6 +20,7 @@
 #include "ecs/scheduler.hpp"
 #include "io/json.hpp"
 #include "methods/method.hpp"
+#include "metrics/metrics.hpp"
 #include "scene/scene.hpp"
 #include "systems/io/atomic_file.hpp"
 #include "systems/io/checkpoint.hpp"
@@ -449,6 +450,7 @@ class Runner {
     if (!opt_.quiet) {
       double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
       std::printf("%s", profiler_.table().c_str());
+      for (auto& [name, value] : metrics()) std::printf("metric %s = %.6g\n", name.c_str(), value);
       std::printf("%s: %s, %lld steps, t = %.6g s, wall %.2f s, %.3g particle-steps/s\n", scene_.name.c_str(),
                   status.c_str(), step_, time_, wall, wall > 0 ? world_.size() * double(step_) / wall : 0.0);
     }
@@ -504,6 +506,9 @@ class Runner {
     if (method_diagnostics_)
       for (auto& [name, value] : method_diagnostics_(world_, res_)) w.key(name).value(value);
     w.end_object();
+    w.key("metrics").begin_object();
+    for (auto& [name, value] : metrics()) w.key(name).value(value);
+    w.end_object();
     if (res_.has(solve_statistics_resource.name)) {
       const auto& st = res_.get(solve_statistics_resource);
       w.key("linear_solver").begin_object();
@@ -522,6 +527,11 @@ class Runner {
     }
     w.end_object();
     write_text_atomic(out_ / "summary.json", w.str());
+  }
+
+  std::vector<std::pair<std::string, double>> metrics() const {
+    const double g = scene_.method == "swe" ? scene_.swe.gravity : scene_.gravity_magnitude();
+    return evaluate_metrics<D>(scene_, world_, probe_rows_, context_.rho0, g);
   }
 
   static std::string fmt(double v) {

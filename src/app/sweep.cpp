@@ -194,19 +194,21 @@ int run_sweep(const SweepOptions& o) {
 
   // sweep.csv: one row per run.
   std::vector<nlohmann::json> summaries, profiles;
-  std::set<std::string> diag_names, system_names;
+  std::set<std::string> metric_names, diag_names, system_names;
   for (auto& r : runs) {
     summaries.push_back(read_json(r.dir / "summary.json"));
     profiles.push_back(read_json(r.dir / "profile.json"));
-    if (summaries.back().is_object() && summaries.back().contains("diagnostics"))
-      for (auto& [k, v] : summaries.back()["diagnostics"].items())
-        if (v.is_number()) diag_names.insert(k);
+    for (const char* section : {"metrics", "diagnostics"})
+      if (summaries.back().is_object() && summaries.back().contains(section))
+        for (auto& [k, v] : summaries.back()[section].items())
+          if (v.is_number()) (section[0] == 'm' ? metric_names : diag_names).insert(k);
     if (profiles.back().is_object() && profiles.back().contains("systems"))
       for (auto& s : profiles.back()["systems"]) system_names.insert(s.value("name", ""));
   }
   std::ostringstream csv;
   for (auto& k : keys) csv << quoted(k) << ",";
   csv << "run,status,wall_time_s,steps,particles,particle_steps_per_second";
+  for (auto& m : metric_names) csv << "," << m;
   for (auto& d : diag_names) csv << "," << d;
   for (auto& s : system_names) csv << ",share_" << s;
   csv << "\n";
@@ -216,13 +218,14 @@ int run_sweep(const SweepOptions& o) {
     csv << runs[i].dir.filename().string() << ",";
     if (!s.is_object()) {
       csv << "missing,,,,";
-      for (std::size_t k = 0; k < diag_names.size() + system_names.size(); ++k) csv << ",";
+      for (std::size_t k = 0; k < metric_names.size() + diag_names.size() + system_names.size(); ++k) csv << ",";
       csv << "\n";
       continue;
     }
     csv << csv_field(s.value("status", nlohmann::json())) << "," << csv_field(s.value("wall_time_s", nlohmann::json()))
         << "," << csv_field(s.value("steps", nlohmann::json())) << "," << csv_field(s.value("particles", nlohmann::json()))
         << "," << csv_field(s.value("particle_steps_per_second", nlohmann::json()));
+    for (auto& m : metric_names) csv << "," << (s.contains("metrics") ? csv_field(s["metrics"].value(m, nlohmann::json())) : "");
     for (auto& d : diag_names) csv << "," << (s.contains("diagnostics") ? csv_field(s["diagnostics"].value(d, nlohmann::json())) : "");
     for (auto& name : system_names) {
       std::string share;

@@ -3,7 +3,7 @@
 // cartesian product of overrides, each run in its own sub-directory of DIR (resumable: a run
 // whose summary.json says completed is kept, the others run again), collected into
 // DIR/sweep.csv (the varied values, status, wall time, steps, particles, particle-steps/s, every
-// number under "diagnostics" in summary.json, each system's share of the step from
+// number under "metrics" and "diagnostics" in summary.json, each system's share of the step from
 // profile.json) and drawn into DIR/sweep.png by tools/plot_sweep.py (error against wall time,
 // the Pareto front marked). docs/tradeoffs.md.
 #include <string>
@@ -16,7 +16,7 @@ struct SweepOptions {
   std::vector<std::string> vary;  // "section.key=v1,v2,..." (commas inside [...] belong to a value)
   std::vector<std::string> sets;  // fixed overrides for every run
   int jobs = 1, threads = 1;
-  std::string error;  // the summary key sweep.png plots against wall time ("" : the first *_error)
+  std::string error;  // the sweep.csv column sweep.png plots against wall time ("": the first *_error)
   bool quiet = false;
 };
 

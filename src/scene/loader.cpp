@@ -11,6 +11,7 @@
 #include "scene/scene.hpp"
 #include "scene/schema.hpp"
 #include "systems/kernels/kernel.hpp"
+#include "metrics/metrics.hpp"
 
 namespace ryushi {
 
@@ -566,6 +567,60 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       for (auto& q : sc.probes)
         if (q.name == p.name) val.fail(where("probe", i, "name"), path_of("probe", i, "name"), "two probes are named '" + p.name + "'");
       sc.probes.push_back(std::move(p));
+    }
+  }
+  if (auto* arr = root["metric"].as_array()) {
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      auto m = root["metric"][i];
+      MetricSpec spec;
+      spec.name = *m["name"].value<std::string>();
+      spec.type = *m["type"].value<std::string>();
+      spec.probe = m["probe"].value_or(std::string());
+      spec.width = m["width"].value_or(0.0);
+      if (auto v = m["surface"].value<double>()) spec.surface = *v;
+      spec.max_shift = *m["max_shift"].value<double>();
+      spec.t_max = *m["t_max"].value<double>();
+      for (auto& q : sc.metrics)
+        if (q.name == spec.name) val.fail(where("metric", i, "name"), path_of("metric", i, "name"), "two metrics are named '" + spec.name + "'");
+      if (spec.type == "dam_break_front" && spec.probe.empty())
+        for (auto& p : sc.probes)
+          if (p.type == "surge_front") {
+            spec.probe = p.name;
+            break;
+          }
+      if (spec.type != "hydrostatic_pressure") {
+        const ProbeSpec* probe = nullptr;
+        for (auto& p : sc.probes)
+          if (p.name == spec.probe) probe = &p;
+        if (!probe)
+          val.fail(&(*arr)[i], path_of("metric", i, "probe"),
+                   "[[metric]] '" + spec.name + "' needs a [[probe]]" +
+                       (spec.type == "dam_break_front" ? " of type surge_front" : " named by its `probe` key") +
+                       (spec.probe.empty() ? "" : "; there is no probe '" + spec.probe + "'"));
+        if (spec.type == "dam_break_front" && probe->type != "surge_front")
+          val.fail(where("metric", i, "probe"), path_of("metric", i, "probe"), "[[metric]] '" + spec.name + "': probe '" + spec.probe + "' is not a surge_front");
+      }
+      if (auto r = m["reference"].value<std::string>()) {
+        auto file = std::filesystem::path(*r);
+        if (file.is_relative()) file = std::filesystem::path(path).parent_path() / file;
+        spec.reference = file.string();
+      } else if (spec.type == "dam_break_front") {
+        spec.reference = (std::filesystem::path(RYUSHI_TOOLS_DIR) / "reference" / "martin_moyce_1952_n2_2.csv").string();
+      } else if (spec.type == "probe_csv") {
+        val.fail(&(*arr)[i], path_of("metric", i, "reference"), "[[metric]] '" + spec.name + "' of type probe_csv needs a reference CSV");
+      }
+      if (!spec.reference.empty()) {
+        try {
+          spec.table = read_reference_table(spec.reference);
+        } catch (const SceneError& e) {
+          val.fail(where("metric", i, "reference") ? where("metric", i, "reference") : &(*arr)[i],
+                   path_of("metric", i, "reference"), std::string("metric.reference: ") + e.what());
+        }
+      }
+      if (spec.type == "dam_break_front" && spec.width <= 0) spec.width = sc.fluid.front().max[0] - sc.fluid.front().min[0];
+      if (spec.type == "hydrostatic_pressure" && std::isnan(spec.surface))
+        for (auto& b : sc.fluid) spec.surface = std::isnan(spec.surface) ? b.max.back() : std::max(spec.surface, b.max.back());
+      sc.metrics.push_back(std::move(spec));
     }
   }
   if (auto* arr = root["systems"].as_array())

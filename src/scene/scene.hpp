@@ -44,6 +44,15 @@ struct ProbeSpec {
   std::string name, type;
   std::vector<double> position;
 };
+// [[metric]] (src/metrics/metrics.hpp).
+struct MetricSpec {
+  std::string name, type, probe;
+  std::string reference;  // resolved path ("" : the type's default)
+  std::vector<std::pair<double, double>> table;  // the reference, read and checked by the loader
+  double width = 0;       // dam_break_front: a (0: the first fluid block's width)
+  double surface = std::numeric_limits<double>::quiet_NaN();  // hydrostatic_pressure
+  double max_shift = 0.3, t_max = 2.5;
+};
 struct SystemSpec {
   std::string name;
   toml::table params;
@@ -112,6 +121,7 @@ struct Scene {
   std::vector<WallBox> walls;
   std::vector<FixedPressureBox> fixed_pressure;
   std::vector<ProbeSpec> probes;
+  std::vector<MetricSpec> metrics;
   std::vector<SystemSpec> systems;
 
   double smoothing_length() const { return smoothing_ratio * spacing; }

@@ -182,6 +182,17 @@ std::vector<SectionSpec> build() {
                 choice("type", "", "pressure: kernel-interpolated (Shepard) fluid pressure at `position`; surge_front: max x of fluid particles + d/2; water_height: surface elevation of the water column standing on `position` (where the kernel-interpolated fill fraction, walls discounted, first falls below 1/2 going up; drops and wall films above a gap do not count; docs/output.md); kinetic_energy: sum of m |v|^2 / 2 over the fluid (J, per metre of depth in 2D); potential_energy: sum of -m g . x over the fluid (zero at the origin); particle_count: the number of fluid particles (grows with particle splitting); front_depth: swe only, the depth of the foremost particle (largest x).",
                        {"pressure", "surge_front", "water_height", "kinetic_energy", "potential_energy", "particle_count", "front_depth"}, true),
                 {"position", K::Vector, "m", "", "Where to measure (pressure; for water_height the base of the vertical line, which reads this height when dry)."}}});
+  s.push_back({"metric", true, false,
+               "A run's error against a reference that ships with ryushi, written under \"metrics\" in summary.json and printed at the end (src/metrics/metrics.hpp; `ryushi sweep` collects them).",
+               {{"name", K::String, "", "", "Name in summary.json.", true},
+                choice("type", "", "dam_break_front: the surge_front probe as Z = x/a against T = t sqrt(2g/a) and a reference table (Martin & Moyce 1952, n^2 = 2, by default), the largest relative error for T <= t_max after one fitted time-origin shift in [0, max_shift] (NAME_shift and NAME_unshifted beside it); hydrostatic_pressure: the fluid pressure against rho0 g (surface - z) at the end, relative L2 error; probe_csv: a probe against a CSV time series (time, value), RMS difference over RMS reference.",
+                       {"dam_break_front", "hydrostatic_pressure", "probe_csv"}, true),
+                {"probe", K::String, "", "(dam_break_front: the first surge_front probe)", "The [[probe]] the metric reads (dam_break_front, probe_csv)."},
+                {"reference", K::String, "", "(dam_break_front: tools/reference/martin_moyce_1952_n2_2.csv)", "CSV of the reference: '#' comment lines, a header line, then two numbers per line (dam_break_front: T, Z; probe_csv: time, value). Path relative to the scene file."},
+                non_negative("width", "m", "(the first fluid block's width)", "dam_break_front: the column width a."),
+                {"surface", K::Float, "m", "(the top of the tallest fluid block)", "hydrostatic_pressure: the free-surface elevation."},
+                ranged({"max_shift", K::Float, "", "0.3", "dam_break_front: the largest time-origin shift fitted (T units)."}, 0.0, 10.0),
+                positive("t_max", "", "2.5", "dam_break_front: the error is taken over T <= t_max.")}});
   s.push_back({"systems", true, false,
                "Registered systems added to the method's pipeline; the scheduler places them by their declared access. Keys besides `name` are the system's parameters (see below).",
                {{"name", K::String, "", "", "Registered system name.", true}}});
