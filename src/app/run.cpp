@@ -373,6 +373,13 @@ class Runner {
     c.scene.path = fs::absolute(scene_.path).string();
     c.scene.text = read_file(scene_.path);
     c.scene.overrides = with_end_time(opt_);
+    // The resolved frame and probe intervals: their defaults follow time.end, and a resume with
+    // --end-time must keep the run's own.
+    char b[80];
+    std::snprintf(b, sizeof b, "output.interval=%.17g", scene_.output_interval);
+    c.scene.overrides.push_back(b);
+    std::snprintf(b, sizeof b, "output.probe_interval=%.17g", scene_.probe_interval);
+    c.scene.overrides.push_back(b);
     c.scene.version = "ryushi 0.1.0";
     c.scene.dimension = D;
     c.frames = frames_;

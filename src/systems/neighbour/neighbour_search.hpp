@@ -112,6 +112,9 @@ class NeighbourSearch final : public System<D> {
   }
   void restore_state(const World<D>& world, Resources& res, std::span<const double> state) override {
     if (skin_ <= 0 || state.empty()) return;
+    // A structural change after the build (particles removed): the stopped run rebuilds at its
+    // next step, and its grid no longer matches the particles, so nothing to restore.
+    if (state[0] != 1.0) return;
     reference_.resize((state.size() - 1) / D);
     for (std::size_t i = 0; i < reference_.size(); ++i)
       for (int a = 0; a < D; ++a) reference_[i][a] = state[1 + i * D + a];
@@ -119,10 +122,7 @@ class NeighbourSearch final : public System<D> {
     if (skip_kind_ >= 0) kind = world.column(components::kind);
     build_neighbour_list<D>(res.get(domain_resource<D>), radius_ + skin_, std::span<const Vec<D>>(reference_),
                             res.ensure(cell_grid_resource<D>), candidates_, kind, skip_kind_);
-    if (state[0] == 1.0)
-      version_ = world.structure_version();
-    else
-      candidates_.builds = 0;  // the stopped run would have rebuilt at its next step
+    version_ = world.structure_version();
   }
 
  private:
