@@ -641,6 +641,19 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
                  "the bucket multigrid does not wrap periodic axes (axis " + std::to_string(a) +
                      "); use [solver] preconditioner = \"jacobi\" with a periodic domain");
   if (sc.fixed_dt > sc.end_time) val.fail(root["time"]["dt"].node(), "time.dt", "time.dt is larger than time.end");
+  // The neighbour search's cell grid covers the domain with cells of the support radius (4
+  // bytes per cell): a domain far larger than the particles' extent at a tiny spacing (1e-6 m
+  // particles in a 1e4 m box) would ask for more memory than the machine has.
+  {
+    double cells = 1;
+    for (int a = 0; a < D; ++a) cells *= std::max(1.0, std::ceil((sc.domain_max[a] - sc.domain_min[a]) / sc.support_radius()));
+    if (cells > double(1ULL << 28)) {
+      std::ostringstream m;
+      m << "the domain spans " << cells << " cells of the support radius " << sc.support_radius()
+        << " m (the neighbour search allows 2^28 = 268435456): shrink [domain] towards the particles' extent";
+      val.fail(get("domain", "max").as_array(), "domain.max", m.str());
+    }
+  }
   return sc;
 }
 
