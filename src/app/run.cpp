@@ -161,6 +161,8 @@ class Runner {
   Runner(const Scene& scene, const RunOptions& opt, fs::path resume = {})
       : scene_(scene), opt_(opt), profiler_(opt.trace), resume_(std::move(resume)) {
     checkpoint_interval_ = opt.checkpoint_interval ? *opt.checkpoint_interval : scene.checkpoint_interval;
+    // The text the run was started from, once: checkpoints record it and resume compares it.
+    if (checkpoint_interval_ > 0) scene_text_ = read_file(scene.path);
   }
 
   // Everything that can reject the input, before any file is written.
@@ -371,7 +373,7 @@ class Runner {
     k.initial_fluid_mass = initial_.fluid_mass, k.initial_fluid_volume = initial_.fluid_volume;
     k.removed = (long long)removed_, k.removed_mass = removed_mass_;
     c.scene.path = fs::absolute(scene_.path).string();
-    c.scene.text = read_file(scene_.path);
+    c.scene.text = scene_text_;
     c.scene.overrides = with_end_time(opt_);
     // The resolved frame and probe intervals: their defaults follow time.end, and a resume with
     // --end-time must keep the run's own.
@@ -569,6 +571,7 @@ class Runner {
   std::size_t slot_output_ = 0, slot_probes_ = 0, slot_reorder_ = 0, slot_health_ = 0;
   fs::path resume_;
   std::vector<std::uint32_t> restored_order_;
+  std::string scene_text_;
   double checkpoint_interval_ = 0, next_checkpoint_ = 0;
   std::chrono::steady_clock::time_point wall_start_;
 };

@@ -11,24 +11,12 @@ namespace ryushi {
 
 namespace {
 
-struct H5 {
-  hid_t id;
-  herr_t (*close)(hid_t);
-  ~H5() {
-    if (id >= 0) close(id);
-  }
-};
-
-void check(herr_t status, const std::string& what) {
-  if (status < 0) throw std::runtime_error("HDF5: " + what + " failed");
-}
-
 void write_raw(hid_t loc, const std::string& name, hid_t type, const void* data, std::vector<hsize_t> dims) {
-  H5 space{H5Screate_simple(int(dims.size()), dims.data(), nullptr), H5Sclose};
-  H5 set{H5Dcreate2(loc, name.c_str(), type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose};
+  H5Handle space{H5Screate_simple(int(dims.size()), dims.data(), nullptr), H5Sclose};
+  H5Handle set{H5Dcreate2(loc, name.c_str(), type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose};
   if (set.id < 0) throw std::runtime_error("HDF5: cannot create " + name);
   if (!dims.empty() && dims[0] == 0) return;
-  check(H5Dwrite(set.id, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "writing " + name);
+  h5_check(H5Dwrite(set.id, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "writing " + name);
 }
 
 void write_string(hid_t loc, const std::string& name, const std::string& text) {
@@ -38,15 +26,15 @@ void write_string(hid_t loc, const std::string& name, const std::string& text) {
 // A dataset's shape and contents as type T (HDF5 converts).
 template <class T>
 std::vector<T> read_raw(hid_t loc, const std::string& name, hid_t type, std::vector<hsize_t>* dims_out = nullptr) {
-  H5 set{H5Dopen2(loc, name.c_str(), H5P_DEFAULT), H5Dclose};
+  H5Handle set{H5Dopen2(loc, name.c_str(), H5P_DEFAULT), H5Dclose};
   if (set.id < 0) throw std::runtime_error("no dataset '" + name + "'");
-  H5 space{H5Dget_space(set.id), H5Sclose};
+  H5Handle space{H5Dget_space(set.id), H5Sclose};
   std::vector<hsize_t> dims(H5Sget_simple_extent_ndims(space.id));
   H5Sget_simple_extent_dims(space.id, dims.data(), nullptr);
   hsize_t n = 1;
   for (auto d : dims) n *= d;
   std::vector<T> out(n);
-  if (n) check(H5Dread(set.id, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), "reading " + name);
+  if (n) h5_check(H5Dread(set.id, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), "reading " + name);
   if (dims_out) *dims_out = dims;
   return out;
 }
@@ -102,25 +90,23 @@ template <int D>
 void write_checkpoint(const std::filesystem::path& path, const World<D>& world, const Checkpoint& c) {
   {
     Hdf5Image image(path);
-    struct {
-      hid_t id;
-    } file{image.id()};
-    write_string(file.id, "format", "ryushi checkpoint 1");
-    write_string(file.id, "version", c.scene.version);
-    write_string(file.id, "scene_path", c.scene.path);
-    write_string(file.id, "scene_text", c.scene.text);
+    const hid_t file = image.id();
+    write_string(file, "format", "ryushi checkpoint 1");
+    write_string(file, "version", c.scene.version);
+    write_string(file, "scene_path", c.scene.path);
+    write_string(file, "scene_text", c.scene.text);
     std::string overrides;
     for (auto& o : c.scene.overrides) overrides += o + "\n";
-    write_string(file.id, "overrides", overrides);
+    write_string(file, "overrides", overrides);
     const long long dim = D;
-    write_raw(file.id, "dimension", H5T_NATIVE_LLONG, &dim, {1});
+    write_raw(file, "dimension", H5T_NATIVE_LLONG, &dim, {1});
     CheckpointClock clock = c.clock;
     double step = double(clock.step), removed = double(clock.removed);
     std::vector<double> values;
     std::string names;
     for (auto& [name, value] : clock_fields(clock, step, removed)) values.push_back(*value), names += name + "\n";
-    write_raw(file.id, "clock", H5T_NATIVE_DOUBLE, values.data(), {values.size()});
-    write_string(file.id, "clock_names", names);
+    write_raw(file, "clock", H5T_NATIVE_DOUBLE, values.data(), {values.size()});
+    write_string(file, "clock_names", names);
     // Frames written so far (the XDMF collection) and the probe rows.
     std::string files, fields;
     std::vector<double> times;
@@ -133,25 +119,25 @@ void write_checkpoint(const std::filesystem::path& path, const World<D>& world, 
       for (auto& fi : f.fields) line += (line.empty() ? "" : ";") + fi.name + ":" + type_tag(fi.type);
       fields += line + "\n";
     }
-    write_string(file.id, "frame_files", files);
-    write_string(file.id, "frame_fields", fields);
-    write_raw(file.id, "frame_times", H5T_NATIVE_DOUBLE, times.data(), {times.size()});
-    write_raw(file.id, "frame_particles", H5T_NATIVE_LLONG, counts.data(), {counts.size()});
+    write_string(file, "frame_files", files);
+    write_string(file, "frame_fields", fields);
+    write_raw(file, "frame_times", H5T_NATIVE_DOUBLE, times.data(), {times.size()});
+    write_raw(file, "frame_particles", H5T_NATIVE_LLONG, counts.data(), {counts.size()});
     const hsize_t cols = c.probe_rows.empty() ? 0 : c.probe_rows.front().size();
     std::vector<double> rows;
     for (auto& r : c.probe_rows) rows.insert(rows.end(), r.begin(), r.end());
-    write_raw(file.id, "probe_rows", H5T_NATIVE_DOUBLE, rows.data(), {c.probe_rows.size(), cols});
-    write_raw(file.id, "cell_order", H5T_NATIVE_UINT32, c.cell_order.data(), {c.cell_order.size()});
+    write_raw(file, "probe_rows", H5T_NATIVE_DOUBLE, rows.data(), {c.probe_rows.size(), cols});
+    write_raw(file, "cell_order", H5T_NATIVE_UINT32, c.cell_order.data(), {c.cell_order.size()});
     std::string system_names;
     for (std::size_t k = 0; k < c.system_states.size(); ++k) {
       system_names += c.system_states[k].first + "\n";
       auto& st = c.system_states[k].second;
-      write_raw(file.id, "system_state_" + std::to_string(k), H5T_NATIVE_DOUBLE, st.data(), {st.size()});
+      write_raw(file, "system_state_" + std::to_string(k), H5T_NATIVE_DOUBLE, st.data(), {st.size()});
     }
-    write_string(file.id, "system_names", system_names);
+    write_string(file, "system_names", system_names);
 
     // Columns, exactly as in memory.
-    H5 group{H5Gcreate2(file.id, "columns", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
+    H5Handle group{H5Gcreate2(file, "columns", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
     const hsize_t n = world.size();
     std::string types;
     for (auto& name : world.column_names()) {
@@ -173,16 +159,16 @@ void write_checkpoint(const std::filesystem::path& path, const World<D>& world, 
           break;
       }
     }
-    write_string(file.id, "column_types", types);
+    write_string(file, "column_types", types);
     const long long next_id = world.next_id();
-    write_raw(file.id, "next_id", H5T_NATIVE_LLONG, &next_id, {1});
+    write_raw(file, "next_id", H5T_NATIVE_LLONG, &next_id, {1});
     group.close(group.id), group.id = -1;
     image.save();
   }
 }
 
 Checkpoint read_checkpoint_header(const std::filesystem::path& path) {
-  H5 file{-1, H5Fclose};
+  H5Handle file{-1, H5Fclose};
   H5E_BEGIN_TRY { file.id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT); }
   H5E_END_TRY;
   if (file.id < 0) throw std::runtime_error(path.string() + ": cannot open the checkpoint");
@@ -237,9 +223,9 @@ Checkpoint read_checkpoint_header(const std::filesystem::path& path) {
 
 template <int D>
 void restore_checkpoint_columns(const std::filesystem::path& path, World<D>& world) {
-  H5 file{H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
+  H5Handle file{H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
   if (file.id < 0) throw std::runtime_error(path.string() + ": cannot open the checkpoint");
-  H5 group{H5Gopen2(file.id, "columns", H5P_DEFAULT), H5Gclose};
+  H5Handle group{H5Gopen2(file.id, "columns", H5P_DEFAULT), H5Gclose};
   if (group.id < 0) throw std::runtime_error(path.string() + ": no columns");
   const auto id = read_raw<long long>(file.id, "next_id", H5T_NATIVE_LLONG).at(0);
   std::size_t n = 0;

@@ -16,31 +16,19 @@ std::vector<std::string> default_frame_fields() {
 
 namespace {
 
-struct H5Handle {
-  hid_t id;
-  herr_t (*close)(hid_t);
-  ~H5Handle() {
-    if (id >= 0) close(id);
-  }
-};
-
-void check(herr_t status, const std::string& what) {
-  if (status < 0) throw std::runtime_error("HDF5: " + what + " failed");
-}
-
 template <class T>
 void write_dataset(hid_t file, const std::string& name, hid_t type, const T* data, std::vector<hsize_t> dims) {
   H5Handle space{H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose};
   H5Handle set{H5Dcreate2(file, name.c_str(), type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose};
   if (set.id < 0) throw std::runtime_error("HDF5: cannot create dataset " + name);
-  check(H5Dwrite(set.id, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "writing " + name);
+  h5_check(H5Dwrite(set.id, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "writing " + name);
 }
 
 template <class T>
 void write_attribute(hid_t file, const char* name, hid_t type, T value) {
   H5Handle space{H5Screate(H5S_SCALAR), H5Sclose};
   H5Handle attr{H5Acreate2(file, name, type, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
-  check(H5Awrite(attr.id, type, &value), std::string("writing attribute ") + name);
+  h5_check(H5Awrite(attr.id, type, &value), std::string("writing attribute ") + name);
 }
 
 // Vectors and tensors as 3 and 3 x 3 components in every dimension (z = 0 in 2D): ParaView's
@@ -70,9 +58,7 @@ std::vector<FieldInfo> write_frame(const std::filesystem::path& path, const Worl
   std::vector<FieldInfo> written;
   {
     Hdf5Image image(path);
-    struct {
-      hid_t id;
-    } file{image.id()};
+    const hid_t file = image.id();
     const hsize_t n = world.size();
     auto fields = default_frame_fields();
     for (auto& e : extra)
@@ -82,7 +68,7 @@ std::vector<FieldInfo> write_frame(const std::filesystem::path& path, const Worl
       ColumnType t = world.column_type(name);
       switch (t) {
         case ColumnType::Scalar:
-          write_dataset(file.id, name, H5T_NATIVE_DOUBLE, world.column(Component<Scalar>{name}).data(), {n});
+          write_dataset(file, name, H5T_NATIVE_DOUBLE, world.column(Component<Scalar>{name}).data(), {n});
           break;
         case ColumnType::Vector: {
           auto padded = padded_vectors<D>(world.column(Component<Vector>{name}));
@@ -92,16 +78,16 @@ std::vector<FieldInfo> write_frame(const std::filesystem::path& path, const Worl
             auto& zs = world.column(Component<Scalar>{"surface_elevation"});
             for (std::size_t i = 0; i < zs.size(); ++i) padded[3 * i + 2] = zs[i];
           }
-          write_dataset(file.id, name, H5T_NATIVE_DOUBLE, padded.data(), {n, 3});
+          write_dataset(file, name, H5T_NATIVE_DOUBLE, padded.data(), {n, 3});
           break;
         }
         case ColumnType::Tensor: {
           auto padded = padded_tensors<D>(world.column(Component<Tensor>{name}));
-          write_dataset(file.id, name, H5T_NATIVE_DOUBLE, padded.data(), {n, 3, 3});
+          write_dataset(file, name, H5T_NATIVE_DOUBLE, padded.data(), {n, 3, 3});
           break;
         }
         case ColumnType::Flags:
-          write_dataset(file.id, name, H5T_NATIVE_INT32, world.column(Component<Flags>{name}).data(), {n});
+          write_dataset(file, name, H5T_NATIVE_INT32, world.column(Component<Flags>{name}).data(), {n});
           break;
       }
       written.push_back({name, t});
@@ -110,9 +96,9 @@ std::vector<FieldInfo> write_frame(const std::filesystem::path& path, const Worl
     // connectivity, and a grid without cells draws nothing.
     std::vector<std::int32_t> vertices(n);
     std::iota(vertices.begin(), vertices.end(), 0);
-    write_dataset(file.id, "connectivity", H5T_NATIVE_INT32, vertices.data(), {n});
-    write_attribute(file.id, "time", H5T_NATIVE_DOUBLE, time);
-    write_attribute(file.id, "step", H5T_NATIVE_LLONG, step);
+    write_dataset(file, "connectivity", H5T_NATIVE_INT32, vertices.data(), {n});
+    write_attribute(file, "time", H5T_NATIVE_DOUBLE, time);
+    write_attribute(file, "step", H5T_NATIVE_LLONG, step);
     image.save();
   }
   return written;

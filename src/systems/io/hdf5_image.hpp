@@ -7,11 +7,25 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "systems/io/atomic_file.hpp"
 
 namespace ryushi {
+
+// An HDF5 identifier closed with its own close function when it goes out of scope.
+struct H5Handle {
+  hid_t id;
+  herr_t (*close)(hid_t);
+  ~H5Handle() {
+    if (id >= 0) close(id);
+  }
+};
+
+inline void h5_check(herr_t status, const std::string& what) {
+  if (status < 0) throw std::runtime_error("HDF5: " + what + " failed");
+}
 
 class Hdf5Image {
  public:
