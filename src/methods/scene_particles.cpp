@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "ecs/lattice.hpp"
 
@@ -11,6 +12,9 @@ template <int D>
 SceneParticles<D> scene_particles(const Scene& s) {
   const double d = s.spacing;
   SceneParticles<D> out;
+  // [particles] disorder: one generator over the fluid in lattice order, so a seed gives one set.
+  std::mt19937_64 rng(s.seed);
+  std::uniform_real_distribution<double> shake(-s.disorder * d, s.disorder * d);
   for (auto& b : s.fluid) {
     Vec<D> lo = scene_vector<D>(b.min);
     std::array<long, D> from{}, to{};
@@ -18,7 +22,10 @@ SceneParticles<D> scene_particles(const Scene& s) {
     double top = b.min[D - 1] + to[D - 1] * d;
     Vec<D> velocity = b.velocity.empty() ? Vec<D>::Zero() : scene_vector<D>(b.velocity);
     Vec<D> centre = 0.5 * (scene_vector<D>(b.min) + scene_vector<D>(b.max));
-    for_each_lattice_point<D>(lo, d, from, to, [&](const Vec<D>& x) {
+    for_each_lattice_point<D>(lo, d, from, to, [&](const Vec<D>& lattice) {
+      Vec<D> x = lattice;
+      if (s.disorder > 0)
+        for (int a = 0; a < D; ++a) x[a] += shake(rng);
       out.fluid.push_back(x);
       out.depth.push_back(top - x[D - 1]);
       Vec<D> u = velocity;

@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include "methods/system_registry.hpp"
+#include "scene/overlaps.hpp"
 #include "scene/scene.hpp"
 #include "scene/schema.hpp"
 #include "systems/kernels/kernel.hpp"
@@ -311,6 +312,10 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   const bool mps = sc.method == "mps", isph = sc.method == "isph", swe = sc.method == "swe";
   // ISPH: the ISPH paper's cubic spline with h = 1.2 d.
   sc.swe.influence_ratio = *get("swe", "influence_ratio").value<double>();
+  sc.disorder = root["particles"]["disorder"].value_or(0.0);
+  sc.seed = static_cast<std::uint64_t>(root["particles"]["seed"].value_or(1LL));
+  if (swe && sc.disorder > 0)
+    val.fail(root["particles"]["disorder"].node(), "particles.disorder", "method 'swe' places its particles on the lattice; disorder is for wcsph, mps and isph");
   sc.smoothing_ratio = root["particles"]["smoothing_ratio"].value_or(mps ? (D == 2 ? 3.1 : 2.1) : isph ? 1.2 : swe ? sc.swe.influence_ratio : 1.5);
   sc.kernel = root["particles"]["kernel"].value_or(std::string(mps ? "mps" : isph ? "cubic_spline" : swe ? "spiky" : "wendland_c2"));
   if (swe) {
@@ -533,6 +538,22 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       }
       sc.walls.push_back(std::move(w));
     }
+  }
+  // Fluid on top of wall particles or of other fluid: r = 0 pairs, not a flow. Shallow-water walls
+  // are mirrored ghosts, not particles, so only the fluid-fluid test applies there.
+  const double overlap_tol = 1e-6 * sc.spacing;
+  for (std::size_t i = 0; i < sc.fluid.size(); ++i) {
+    for (std::size_t k = 0; k < i; ++k)
+      if (boxes_overlap(sc.fluid[i].min, sc.fluid[i].max, sc.fluid[k].min, sc.fluid[k].max, overlap_tol))
+        val.fail(where("fluid", i, "min"), path_of("fluid", i, "min"),
+                 "[[fluid]] #" + std::to_string(i) + " overlaps [[fluid]] #" + std::to_string(k) +
+                     " (their particles would sit on each other)");
+    for (std::size_t k = 0; !swe && k < sc.walls.size(); ++k)
+      if (fluid_in_wall_layers(sc.fluid[i], sc.walls[k], sc.spacing, overlap_tol))
+        val.fail(where("fluid", i, "min"), path_of("fluid", i, "min"),
+                 "[[fluid]] #" + std::to_string(i) + " reaches into the " + std::to_string(sc.walls[k].layers) +
+                     " particle layers of [[wall]] #" + std::to_string(k) +
+                     "; keep fluid blocks inside the wall's min..max (the layers lie outside it)");
   }
   if (auto* arr = root["fixed_pressure"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {

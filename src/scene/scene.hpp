@@ -3,6 +3,7 @@
 // which reports any problem as SceneError("file:line:column: message").
 #include <toml++/toml.h>
 
+#include <cstdint>
 #include <limits>
 #include <memory>
 
@@ -87,6 +88,8 @@ struct Scene {
   std::vector<bool> periodic;
   bool outflow_removes = false;  // [domain] outflow = "remove"
   double spacing = 0, smoothing_ratio = 1.5;
+  double disorder = 0;        // fluid displaced by U[-disorder d, disorder d] per axis
+  std::uint64_t seed = 1;     // of the disorder
   std::string kernel = "wendland_c2";
   int reorder_interval = 25;
   double neighbour_skin = 0.6;  // Verlet skin in spacings
