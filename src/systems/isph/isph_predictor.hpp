@@ -8,6 +8,7 @@
 //     neighbour carries v_wall (no-slip) or v_i (slip, no contribution).
 //   convective term: only in the Eulerian description (c = v), with the corrected gradient;
 //     the ALE description corrects the velocity where the shifting moves a particle.
+#include <algorithm>
 #include <vector>
 
 #include "ecs/system.hpp"
@@ -52,6 +53,13 @@ class IsphPredictor final : public System<D> {
       if (p_.nu > 0 || eulerian) stencil.gather(view, i);
       if (p_.nu > 0) {
         laplacian_weights(p_.viscous_laplacian, stencil, w);
+        // Explicit diffusion is stable only with non-negative neighbour weights (then the row
+        // is a weighted average that cannot overshoot once dt < 1 / (nu sum w)). The corrected
+        // and SPH(2) rows at a free surface or a wall corner have negative ones, and a
+        // viscosity-dominated flow (1e4 Pa s) blew up at any dt, 1/5 of the viscous limit
+        // included: those rows use the standard weights.
+        if (p_.viscous_laplacian != LaplacianOrder::Standard && std::any_of(w.begin(), w.end(), [](double wk) { return wk < 0; }))
+          laplacian_weights_standard(stencil, w);
         Vec<D> lap = Vec<D>::Zero();
         for (std::size_t k = 0; k < nb.size(); ++k) {
           std::size_t j = nb[k];
