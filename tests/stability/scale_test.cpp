@@ -32,7 +32,7 @@ TEST_CASE("stability: a single fluid particle falls freely, v = g t, under every
   }
 }
 
-TEST_CASE("stability: 1e-6 m particles 5 km from the origin keep their density; a 1e4 m box for them is refused") {
+TEST_CASE("stability: 1e-6 m particles 5 km from the origin keep their density, and a 1e4 m box for them is refused") {
   auto dir = test::scratch("stability_tiny");
   const std::string body =
       "[scene]\ndimension = 2\n[particles]\nspacing = 1e-6\n[time]\nend = 1e-5\n"
