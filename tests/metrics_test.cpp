@@ -14,6 +14,7 @@ namespace fs = std::filesystem;
 
 namespace {
 std::string bin() { return RYUSHI_BINARY; }
+double morris(double y, double t, double l, double F, double nu);
 }  // namespace
 
 TEST_CASE("metrics: dam_break_front is the time-origin criterion of the tests, computed by the run") {
@@ -92,4 +93,78 @@ TEST_CASE("metrics: a bad reference table or a missing probe is exit code 2 with
   check_scene("[[metric]]\nname = \"m\"\ntype = \"dam_break_front\"\n", "needs a [[probe]] of type surge_front");
   check_scene("[[probe]]\nname = \"ke\"\ntype = \"kinetic_energy\"\n[[metric]]\nname = \"m\"\ntype = \"probe_csv\"\nprobe = \"ke\"\n",
               "needs a reference CSV");
+  check_scene("[material]\nviscosity = 1e-3\n[[metric]]\nname = \"m\"\ntype = \"poiseuille_profile\"\nforce = 0.5\n",
+              "scene.toml:15:1: [[metric]] 'm' of type poiseuille_profile needs the channel width `width` > 0");
+  check_scene("[[metric]]\nname = \"m\"\ntype = \"rotating_square_pressure\"\n",
+              "[[metric]] 'm' needs a [[probe]] of type pressure");
+  check_scene("[[metric]]\nname = \"m\"\ntype = \"ritter_depth\"\n", "of type ritter_depth is for method swe");
+}
+
+namespace {
+// Morris, Fox & Zhu's start-up series (as tests/poiseuille_test.cpp writes it), independently of
+// src/metrics/analytic_references.hpp.
+double morris(double y, double t, double l, double F, double nu) {
+  const double pi = 3.14159265358979323846;
+  double u = F / (2 * nu) * y * (l - y);
+  for (int n = 0; n < 200; ++n) {
+    const double k = 2 * n + 1;
+    u -= 4 * F * l * l / (nu * pi * pi * pi * k * k * k) * std::sin(k * pi * y / l) * std::exp(-k * k * pi * pi * nu * t / (l * l));
+  }
+  return u;
+}
+}  // namespace
+
+TEST_CASE("metrics: poiseuille_profile, ritter_depth and rotating_square_pressure equal their definitions on the run's output") {
+  auto dir = test::scratch("metric_more");
+  // The Eulerian channel to t = 0.1 s: the x velocity across the lattice column at x = 0.96875 mm.
+  auto r = test::run_command(bin() + " run " + test::scene_path("poiseuille_isph_2d.toml") + " --out " +
+                             (dir / "channel").string() + " --quiet --end-time 0.1");
+  REQUIRE_MESSAGE(r.code == kExitDone, r.output);
+  {
+    auto frame = test::last_frame(dir / "channel");
+    auto x = test::read_dataset(frame, "position").values, v = test::read_dataset(frame, "velocity").values,
+         kind = test::read_dataset(frame, "kind").values;
+    double sum = 0;
+    int count = 0;
+    for (std::size_t i = 0; i < kind.size(); ++i)
+      if (kind[i] == 0 && std::abs(x[3 * i] - 0.96875e-3) < 1e-9) {
+        const double e = v[3 * i] - morris(x[3 * i + 1], 0.1, 1e-3, 0.5, 1e-6);
+        sum += e * e, ++count;
+      }
+    REQUIRE(count == 15);
+    const double expected = std::sqrt(sum / count) / morris(0.5e-3, 0.1, 1e-3, 0.5, 1e-6);
+    CHECK(test::json_number(test::read_text(dir / "channel" / "summary.json"), "profile_error") ==
+          doctest::Approx(expected).epsilon(1e-6));
+  }
+  // Ritter's dam break at t = 0.2 s: h0 = 0.25 m behind x = 4.65 m.
+  r = test::run_command(bin() + " run " + test::scene_path("dam_break_ritter_swe.toml") + " --out " +
+                        (dir / "ritter").string() + " --quiet --end-time 0.2");
+  REQUIRE_MESSAGE(r.code == kExitDone, r.output);
+  {
+    auto frame = test::last_frame(dir / "ritter");
+    auto x = test::read_dataset(frame, "position").values, h = test::read_dataset(frame, "depth").values,
+         kind = test::read_dataset(frame, "kind").values;
+    const double g = 9.81, h0 = 0.25, dam = 4.65, t = 0.2, c0 = std::sqrt(g * h0);
+    double diff = 0, ref = 0;
+    for (std::size_t i = 0; i < kind.size(); ++i) {
+      const double xi = x[3 * i] - dam;
+      if (kind[i] != 0 || xi < 0) continue;
+      const double hr = xi >= 2 * c0 * t ? 0.0 : std::pow(2 * c0 - xi / t, 2) / (9 * g);
+      diff += std::abs(h[i] - hr), ref += hr;
+    }
+    CHECK(test::json_number(test::read_text(dir / "ritter" / "summary.json"), "ritter_error") ==
+          doctest::Approx(diff / ref).epsilon(1e-6));
+  }
+  // The rotating square's centre after its first probe interval: the series gives -147.34 Pa
+  // there (tests/isph_test.cpp sums it).
+  r = test::run_command(bin() + " run " + test::scene_path("rotating_square_isph_2d.toml") + " --out " +
+                        (dir / "square").string() + " --quiet --end-time 0.02");
+  REQUIRE_MESSAGE(r.code == kExitDone, r.output);
+  {
+    auto probes = test::read_csv(dir / "square" / "probes.csv");
+    REQUIRE(probes["time"].size() >= 2);
+    REQUIRE(probes["time"][1] > 0);
+    CHECK(test::json_number(test::read_text(dir / "square" / "summary.json"), "initial_pressure_error") ==
+          doctest::Approx(std::abs(probes["p_centre"][1] / -147.34 - 1)).epsilon(1e-3));
+  }
 }

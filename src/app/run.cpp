@@ -551,7 +551,7 @@ class Runner {
 
   std::vector<std::pair<std::string, double>> metrics() const {
     const double g = scene_.method == "swe" ? scene_.swe.gravity : scene_.gravity_magnitude();
-    return evaluate_metrics<D>(scene_, world_, probe_rows_, context_.rho0, g);
+    return evaluate_metrics<D>(scene_, world_, probe_rows_, context_.rho0, g, time_);
   }
 
   static std::string fmt(double v) {

@@ -11,6 +11,14 @@
 //   hydrostatic_pressure  the fluid pressure against rho0 g (surface - z) at the end:
 //                         sqrt(sum (p - p_ref)^2 / sum p_ref^2) over fluid particles below
 //                         `surface` (default: the top of the tallest fluid block)
+//   poiseuille_profile    the x velocity across the fluid column nearest position[0] against the
+//                         start-up series of Morris, Fox & Zhu (1997, eq. 21), L2 over the
+//                         column relative to the series' centreline speed
+//   ritter_depth          swe: the depth against Ritter's dry-bed dam break, sum |h - h_R| /
+//                         sum h_R downstream of the dam (NAME_whole: every particle; NAME_front:
+//                         the front's relative lag)
+//   rotating_square_pressure  a pressure probe's first sample after t = 0 against Colagrossi's
+//                         series for the rotating square (the initial pressure), relative
 //   probe_csv             a probe's series against a CSV time series (time, value): the RMS of
 //                         the difference (reference interpolated linearly at the probe times
 //                         inside its range) over the RMS of the reference
@@ -31,7 +39,8 @@ using ProbeRows = std::vector<std::vector<double>>;
 // samples yet) reports NaN.
 template <int D>
 std::vector<std::pair<std::string, double>> evaluate_metrics(const Scene& scene, const World<D>& world,
-                                                             const ProbeRows& probes, double rho0, double g);
+                                                             const ProbeRows& probes, double rho0, double g,
+                                                             double time);
 
 // A reference table (two numeric columns after optional '#' comment lines and a header line).
 // Throws SceneError "file:line: message" on a malformed line.

@@ -599,6 +599,9 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       spec.probe = m["probe"].value_or(std::string());
       spec.width = m["width"].value_or(0.0);
       if (auto v = m["surface"].value<double>()) spec.surface = *v;
+      if (auto v = m["force"].value<double>()) spec.force = *v;
+      if (auto v = m["depth"].value<double>()) spec.depth = *v;
+      if (auto* v = where("metric", i, "position")) spec.position = vec_of(*v);
       spec.max_shift = *m["max_shift"].value<double>();
       spec.t_max = *m["t_max"].value<double>();
       for (auto& q : sc.metrics)
@@ -609,15 +612,27 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
             spec.probe = p.name;
             break;
           }
-      if (spec.type != "hydrostatic_pressure") {
+      if (spec.type == "rotating_square_pressure" && spec.probe.empty())
+        for (auto& p : sc.probes)
+          if (p.type == "pressure") {
+            spec.probe = p.name;
+            break;
+          }
+      const bool reads_probe =
+          spec.type == "dam_break_front" || spec.type == "probe_csv" || spec.type == "rotating_square_pressure";
+      if (reads_probe) {
         const ProbeSpec* probe = nullptr;
         for (auto& p : sc.probes)
           if (p.name == spec.probe) probe = &p;
         if (!probe)
           val.fail(&(*arr)[i], path_of("metric", i, "probe"),
                    "[[metric]] '" + spec.name + "' needs a [[probe]]" +
-                       (spec.type == "dam_break_front" ? " of type surge_front" : " named by its `probe` key") +
+                       (spec.type == "dam_break_front"            ? " of type surge_front"
+                        : spec.type == "rotating_square_pressure" ? " of type pressure"
+                                                                  : " named by its `probe` key") +
                        (spec.probe.empty() ? "" : "; there is no probe '" + spec.probe + "'"));
+        if (spec.type == "rotating_square_pressure" && probe->type != "pressure")
+          val.fail(where("metric", i, "probe"), path_of("metric", i, "probe"), "[[metric]] '" + spec.name + "': probe '" + spec.probe + "' is not a pressure probe");
         if (spec.type == "dam_break_front" && probe->type != "surge_front")
           val.fail(where("metric", i, "probe"), path_of("metric", i, "probe"), "[[metric]] '" + spec.name + "': probe '" + spec.probe + "' is not a surge_front");
       }
@@ -639,6 +654,33 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
         }
       }
       if (spec.type == "dam_break_front" && spec.width <= 0) spec.width = sc.fluid.front().max[0] - sc.fluid.front().min[0];
+      const FluidBlock& first = sc.fluid.front();
+      auto need = [&](bool ok, const char* key, const std::string& what) {
+        if (!ok)
+          val.fail(where("metric", i, key) ? where("metric", i, key) : &(*arr)[i], path_of("metric", i, key),
+                   "[[metric]] '" + spec.name + "' of type " + spec.type + " " + what);
+      };
+      if (spec.type == "poiseuille_profile") {
+        need(spec.width > 0, "width", "needs the channel width `width` > 0");
+        need(std::isfinite(spec.force) && spec.force != 0, "force", "needs the body force `force` (non-zero)");
+        need(sc.viscosity > 0, "type", "needs a viscous fluid ([material] viscosity > 0)");
+        if (spec.position.empty()) spec.position = {0.5 * (first.min[0] + first.max[0]), 0.0};
+        need(spec.position.size() >= 2, "position", "takes position = [x of the column, y of the wall]");
+      }
+      if (spec.type == "ritter_depth") {
+        need(swe, "type", "is for method swe");
+        if (std::isnan(spec.depth)) spec.depth = first.depth;
+        need(spec.depth > 0, "depth", "needs the depth behind the dam (`depth` > 0, or a first [[fluid]] with depth)");
+        if (spec.position.empty()) spec.position = first.max;
+      }
+      if (spec.type == "rotating_square_pressure") {
+        need(D == 2, "type", "is for 2D scenes");
+        spec.angular_velocity = first.angular_velocity;
+        need(spec.angular_velocity != 0, "type", "needs the first [[fluid]] block to rotate (angular_velocity)");
+        if (spec.width <= 0) spec.width = first.max[0] - first.min[0];
+        if (spec.position.empty())
+          for (int a = 0; a < D; ++a) spec.position.push_back(0.5 * (first.min[a] + first.max[a]));
+      }
       if (spec.type == "hydrostatic_pressure" && std::isnan(spec.surface))
         for (auto& b : sc.fluid) spec.surface = std::isnan(spec.surface) ? b.max.back() : std::max(spec.surface, b.max.back());
       sc.metrics.push_back(std::move(spec));

@@ -53,6 +53,11 @@ struct MetricSpec {
   double width = 0;       // dam_break_front: a (0: the first fluid block's width)
   double surface = std::numeric_limits<double>::quiet_NaN();  // hydrostatic_pressure
   double max_shift = 0.3, t_max = 2.5;
+  double force = std::numeric_limits<double>::quiet_NaN();  // poiseuille_profile: F, m/s^2
+  double depth = std::numeric_limits<double>::quiet_NaN();  // ritter_depth: h0 (NaN: the first block's)
+  std::vector<double> position;  // poiseuille_profile: (x of the column, y of the wall); ritter_depth:
+                                 // (x of the dam); rotating_square_pressure: the square's centre
+  double angular_velocity = 0;   // rotating_square_pressure: the first fluid block's
 };
 struct SystemSpec {
   std::string name;
