@@ -10,7 +10,7 @@ PY_PACKAGES := python3-numpy python3-h5py python3-matplotlib
 PV_PACKAGES := paraview python3-paraview xvfb xauth ffmpeg
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps py-deps pv-deps build run test test-paraview test-sanitize bench plots docs fuzz clean
+.PHONY: all deps py-deps pv-deps build run test test-paraview test-sanitize bench plots tradeoffs docs fuzz clean
 
 all: build
 
@@ -73,6 +73,11 @@ plots: build py-deps
 	mkdir -p docs/img
 	test -f out/dam_break_2d/probes.csv || $(BUILD)/ryushi run scenes/dam_break_2d.toml --out out/dam_break_2d --quiet
 	/usr/bin/python3 tools/plot_dam_break.py out/dam_break_2d docs/img/dam_break_front.png
+
+# docs/tradeoffs.md: the speed-accuracy sweeps (tools/tradeoffs.py; about five minutes on 2 cores;
+# resumable: delete out/tradeoffs to measure anew).
+tradeoffs: build py-deps
+	/usr/bin/python3 tools/tradeoffs.py --build $(BUILD) --out out/tradeoffs --doc docs/tradeoffs.md
 
 # libFuzzer on the scene loader (fuzz/README.md); new coverage is merged into fuzz/corpus/.
 FUZZ_SECONDS ?= 600

@@ -201,3 +201,30 @@ TEST_CASE("checkpoint: SIGINT stops a checkpointed run with a checkpoint where i
   for (std::size_t k = 0; k < a.size(); ++k)
     REQUIRE(test::read_dataset(a[k], "position").values == test::read_dataset(b[k], "position").values);
 }
+
+TEST_CASE("checkpoint: a disk that fills after a checkpoint leaves that checkpoint whole, and resume continues from it") {
+  const std::string bin = RYUSHI_BINARY;
+  auto dir = test::scratch("checkpoint_later_full");
+  auto out = dir / "out";
+  // A 320 KiB file-size limit: the first checkpoints fit, but with a probe sample at every step
+  // the checkpoint (which carries the probe rows, for resume) and probes.csv grow past it after
+  // some thousand steps: the write that fails is a later checkpoint's (or probes.csv's).
+  auto r = test::run_command("bash -c 'ulimit -f 320; exec " + bin + " run " + test::scene_path("dam_break_2d.toml") +
+                             " --out " + out.string() +
+                             " --quiet --set particles.spacing=0.02 --set output.probe_interval=1e-7"
+                             " --end-time 2.0 --checkpoint-interval 0.02'");
+  REQUIRE(r.code == kExitOutputFailed);
+  CHECK_MESSAGE(r.output.find(".tmp: write failed: File too large") != std::string::npos, r.output);
+  CHECK(!fs::exists(out / "probes.csv.tmp"));
+  CHECK(!fs::exists(out / "checkpoint.h5.tmp"));
+  // The latest checkpoint is whole and behind where the run stopped.
+  const double stopped = test::json_number(test::read_text(out / "summary.json"), "simulated_time");
+  const double saved = test::read_dataset(out / "checkpoint.h5", "clock").values.at(0);
+  CHECK(saved >= 0.02);
+  CHECK(saved <= stopped);
+  // With the disk free again the run resumes from it and finishes (a short end: the point is
+  // that the checkpoint opens and carries on, not the remaining seconds).
+  auto resumed = test::run_command(bin + " resume " + out.string() + " --quiet --end-time " + std::to_string(saved + 0.01));
+  CHECK_MESSAGE(resumed.code == kExitDone, resumed.output);
+  CHECK(test::json_raw(test::read_text(out / "summary.json"), "status") == "completed");
+}

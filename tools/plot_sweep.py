@@ -5,7 +5,8 @@
 
 --key names the varied keys (the first columns of sweep.csv); one series per value of the last
 varied key (one series when a single key varies), each point labelled with the other keys'
-values. --error picks the error column; by default the first column whose name ends in
+values (up to ten points; a larger sweep's points are in the table). Axes are logarithmic where
+the values span a decade. --error picks the error column; by default the first column whose name ends in
 "_error". The Pareto front joins the runs that no faster run beats in error. Exits 1 when the
 table has no such column or no completed run.
 """
@@ -46,9 +47,10 @@ def main():
         xs = [float(r["wall_time_s"]) for r in rs]
         ys = [float(r[error]) for r in rs]
         ax.plot(xs, ys, "o-", label=f"{series_key} = {value}" if series_key else value)
+        # Labels only where they stay readable; a larger sweep's points are in sweep.csv.
         for r, x, y in zip(rs, xs, ys):
             label = ", ".join(f"{k.split('.')[-1]}={r[k]}" for k in keys[:-1])
-            if label:
+            if label and len(done) <= 10:
                 ax.annotate(label, (x, y), textcoords="offset points", xytext=(4, 4), fontsize=7)
     # Pareto front: the runs no faster run beats.
     front, best = [], float("inf")
@@ -60,8 +62,15 @@ def main():
             lw=1, label="Pareto front")
     ax.scatter([float(r["wall_time_s"]) for r in front], [float(r[error]) for r in front], s=90,
                facecolors="none", edgecolors="k")
-    ax.set_xscale("log")
-    ax.set_yscale("log")
+    # Log axes only where the values span a decade: a narrow range on a log axis crowds its labels.
+    def spread(values):
+        positive = [v for v in values if v > 0]
+        return max(positive) / min(positive) if len(positive) == len(values) and positive else 1.0
+    if spread([float(r["wall_time_s"]) for r in done]) >= 10:
+        ax.set_xscale("log")
+    if spread([float(r[error]) for r in done]) >= 10:
+        ax.set_yscale("log")
+    ax.grid(True, which="both", alpha=0.3)
     ax.set_xlabel("wall time (s)")
     ax.set_ylabel(error)
     ax.set_title(f"{error} against wall time")

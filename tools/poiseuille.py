@@ -26,8 +26,8 @@ def morris(y, t):
     return u
 
 
-def sets(cells):
-    """The --set arguments that put scenes/poiseuille_isph_2d.toml at l/d = cells."""
+def overrides(cells):
+    """The key=value overrides that put scenes/poiseuille_isph_2d.toml at l/d = cells."""
     d = WIDTH / cells
     b = 3 * d
     vec = lambda x, y: f"[{x:.9g}, {y:.9g}]"
@@ -36,7 +36,12 @@ def sets(cells):
              ("fluid.0.min", vec(-b, d / 2)), ("fluid.0.max", vec(LENGTH + b, WIDTH - d / 2)),
              ("wall.0.min", vec(-b, d / 2)), ("wall.0.max", vec(LENGTH + b, WIDTH - d / 2)),
              ("fixed_pressure.0.min", vec(-b, 0)), ("fixed_pressure.1.max", vec(LENGTH + b, WIDTH))]
-    return " ".join(f"--set '{k}={v}'" for k, v in pairs)
+    return [f"{k}={v}" for k, v in pairs]
+
+
+def sets(cells):
+    """The --set arguments that put scenes/poiseuille_isph_2d.toml at l/d = cells."""
+    return " ".join(f"--set '{kv}'" for kv in overrides(cells))
 
 
 def errors(run):
