@@ -47,6 +47,8 @@ STUDIES = [
      "pressure_error"),
     ("hydrostatic_isph", "hydrostatic_isph_2d.toml", ["particles.spacing=0.025,0.0125,0.00625"], ["time.end=0.5"],
      "pressure_error"),
+    ("swe_splitting", "dam_break_ritter_swe.toml", ["splitting.enabled=false,true", "particles.spacing=0.1,0.05,0.025"],
+     [], "ritter_error"),
 ]
 
 
@@ -71,6 +73,12 @@ def keys_of(study):
     return [v.split("=")[0] for v in study[2]]
 
 
+def short(key):
+    """A varied key's name in tables: its last part, or its section for an on/off switch."""
+    section, _, name = key.rpartition(".")
+    return section.split(".")[-1] if name == "enabled" else name
+
+
 def fmt(x, digits=3):
     if x in ("", None):
         return "-"
@@ -81,7 +89,7 @@ def fmt(x, digits=3):
 
 
 def table(rows, keys, error, extra=()):
-    head = [k.split(".")[-1] for k in keys] + ["status", "wall s", "steps", "particles", error] + [e[1] for e in extra]
+    head = [short(k) for k in keys] + ["status", "wall s", "steps", "particles", error] + [e[1] for e in extra]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for r in rows:
         cells = [r[k] for k in keys] + [r["status"], fmt(r["wall_time_s"]), r["steps"], r["particles"],
@@ -179,7 +187,7 @@ def main():
     os.makedirs("docs/img", exist_ok=True)
     results = {s[0]: run_sweep(a.build, a.out, s) for s in STUDIES}
     by_name = {s[0]: s for s in STUDIES}
-    for name in ("operators_hydrostatic", "mps_solver", "wcsph_sound_speed"):
+    for name in ("operators_hydrostatic", "mps_solver", "wcsph_sound_speed", "swe_splitting"):
         cmd = [sys.executable, os.path.join(os.path.dirname(os.path.abspath(__file__)), "plot_sweep.py"),
                os.path.join(a.out, name, "sweep.csv"), f"docs/img/tradeoffs_{name}.png", "--error", by_name[name][4]]
         for k in keys_of(by_name[name]):
@@ -258,7 +266,7 @@ def main():
         w(f"Across the {len(rows)} settings the front error stays between {min(errs):.4g} and {max(errs):.4g}, while "
           f"the wall time goes from {min(walls):.3g} to {max(walls):.3g} s and the linear solve's share from "
           f"{min(shares):.2f} to {max(shares):.2f}: the front does not see the solver's tolerance down to 1e-3, so "
-          f"the fastest setting ({', '.join(f'{k.split(chr(46))[-1]} = {fastest[k]}' for k in keys_of(s))}) loses "
+          f"the fastest setting ({', '.join(f'{short(k)} = {fastest[k]}' for k in keys_of(s))}) loses "
           "nothing in the front (only the front is measured here: a pressure probe or an impact load may see "
           "the tolerance where the front does not).\n")
     w("![front error against wall time](img/tradeoffs_mps_solver.png)\n")
@@ -314,6 +322,15 @@ def main():
         w(f"**{flow}**\n")
         w("\n".join(lines) + "\n")
 
+    w("## Shallow water: particle splitting x resolution on Ritter's dam break\n")
+    w("Method swe, h0 = 0.25 m released onto a dry bed, to t = 0.5 s; ritter_error is sum |h - h_Ritter| / "
+      "sum h_Ritter over the particles downstream of the dam (docs/swe.md), ritter_error_front the front's lag "
+      "behind 2 sqrt(g h0) t relative to that run.\n")
+    s = by_name["swe_splitting"]
+    w(table(results[s[0]], keys_of(s), s[4], extra=[("ritter_error_front", "front lag"),
+                                                   ("ritter_error_whole", "whole wave")]) + "\n")
+    w("![Ritter depth error against wall time](img/tradeoffs_swe_splitting.png)\n")
+
     w("## For an error budget of X on this kind of flow, pick Y\n")
     w("The fastest measured run within each budget (from the tables above; wall time on one core).\n")
     lines = ["| flow | error budget | pick | wall s | error |", "|---|---|---|---|---|"]
@@ -324,7 +341,7 @@ def main():
             for r in completed(results[n], error):
                 label = {"mps_solver": "MPS", "wcsph_sound_speed": "WCSPH", "operators_hydrostatic": "ISPH"}.get(
                     n, n.split("_")[-1].upper())
-                label += " " + ", ".join(f"{k.split('.')[-1]} = {r[k]}" for k in keys(n))
+                label += " " + ", ".join(f"{short(k)} = {r[k]}" for k in keys(n))
                 out.append((label, r, float(r[error])))
         return out
 
@@ -332,8 +349,11 @@ def main():
                      "front_error", lambda n: keys_of(by_name[n]))
     tank = candidates(["hydrostatic_wcsph", "hydrostatic_mps", "hydrostatic_isph", "operators_hydrostatic"],
                       "pressure_error", lambda n: keys_of(by_name[n]))
+    swe = candidates(["swe_splitting"], "ritter_error", lambda n: keys_of(by_name[n]))
+    swe = [("SWE " + label.split(" ", 1)[1], r, e) for label, r, e in swe]
     for flow, cands, error, budgets in (("violent free surface (dam break front)", dam, "front_error", [0.05, 0.03, 0.02]),
-                                       ("still water (hydrostatic pressure)", tank, "pressure_error", [0.01, 1e-3, 1e-4])):
+                                       ("still water (hydrostatic pressure)", tank, "pressure_error", [0.01, 1e-3, 1e-4]),
+                                       ("shallow water onto a dry bed (Ritter depth)", swe, "ritter_error", [0.4, 0.2, 0.1])):
         for b in budgets:
             pick = fastest_within(cands, b)
             if pick is None:
