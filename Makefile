@@ -73,6 +73,11 @@ plots: build py-deps
 	mkdir -p docs/img
 	test -f out/dam_break_2d/probes.csv || $(BUILD)/ryushi run scenes/dam_break_2d.toml --out out/dam_break_2d --quiet
 	/usr/bin/python3 tools/plot_dam_break.py out/dam_break_2d docs/img/dam_break_front.png
+	@# every sweep's plot from its table (ryushi sweep draws it too; this redraws after a change to the tool)
+	@for csv in $$(find out -name sweep.csv 2>/dev/null); do \
+	  keys=$$(head -1 $$csv | tr , '\n' | sed -n '/^run$$/q;p' | sed 's/^/--key /'); \
+	  /usr/bin/python3 tools/plot_sweep.py $$csv $$(dirname $$csv)/sweep.png $$keys || exit 1; \
+	done
 
 # docs/tradeoffs.md: the speed-accuracy sweeps (tools/tradeoffs.py; about five minutes on 2 cores;
 # resumable: delete out/tradeoffs to measure anew).

@@ -46,6 +46,20 @@ TEST_CASE("stability: an MPS tank started with 30% disorder settles") {
 TEST_CASE("stability: an ISPH tank with Fickian shifting started with 30% disorder settles") {
   check_disordered_tank("isph_fickian", "hydrostatic_isph_2d.toml", {"shifting.model=fickian"});
 }
+// The paper's density-based shifting does not settle a 30% disorder (below), but it stops
+// cleanly: exit 3 with the step, the particle and the system, and the frames before it whole.
+TEST_CASE("stability: an ISPH tank with the paper's density shifting started with 30% disorder settles or stops cleanly") {
+  auto o = test::run_shipped("disorder_isph_density_clean", "hydrostatic_isph_2d.toml",
+                             {"particles.disorder=0.3", "time.end=1.0", "output.probe_interval=0.01"});
+  if (o.code == kExitDone) {
+    auto e = test::energy(o);
+    CHECK(std::abs(e.total.back() - e.total.front()) <= kMass * kG * kSpacing / 2);
+    CHECK(std::sqrt(2 * e.kinetic.back() / kMass) < 0.05 * std::sqrt(kG * kDepth));
+  } else {
+    test::check_clean_failure(o, "isph density shifting, 30% disorder");
+  }
+}
+
 // The paper's density-based shifting moves a particle by C h (...) per step with C = 0.005,
 // which at CFL 0.2 does not undo a 30% disorder before the pressure noise grows: the kinetic
 // energy doubles every ~0.05 s from t = 0.15 s and a particle leaves the tank at t = 0.55 s
