@@ -48,7 +48,9 @@ TEST_CASE("stability: an ISPH tank with Fickian shifting started with 30% disord
 }
 // The paper's density-based shifting does not settle a 30% disorder (below), but it stops
 // cleanly: exit 3 with the step, the particle and the system, and the frames before it whole.
-TEST_CASE("stability: an ISPH tank with the paper's density shifting started with 30% disorder settles or stops cleanly") {
+TEST_CASE(
+    "stability: an ISPH tank with the paper's density shifting started with 30% disorder settles or stops "
+    "cleanly") {
   auto o = test::run_shipped("disorder_isph_density_clean", "hydrostatic_isph_2d.toml",
                              {"particles.disorder=0.3", "time.end=1.0", "output.probe_interval=0.01"});
   if (o.code == kExitDone) {
