@@ -22,7 +22,7 @@ const MethodScene kDamBreaks[] = {{"wcsph", "dam_break_2d.toml", 0.125 * 1.5 * 1
 constexpr double kSpacing = 0.025, kColumn = 0.25, kHeight = 0.5, kRho = 1000, kG = 9.81;
 // The column's 10 x 20 particles: none may be lost (dam_break_isph_2d removes what leaves).
 constexpr double kFluidParticles = 200;
-// What a step may gain: WCSPH's hydrostatic start stores rho g^2 H^3 a / (6 c0^2) = 0.51 J/m of
+// What the run may gain: WCSPH's hydrostatic start stores rho g^2 H^3 a / (6 c0^2) = 0.51 J/m of
 // compression (c0 = 10 sqrt(2 g H)) that can come back as motion; MPS and ISPH store none. The
 // allowance is three times that, 0.5% of the column's 307 J/m of potential energy.
 constexpr double kEnergyAllowance = 1.5;
