@@ -53,6 +53,14 @@ int wait_or_kill(pid_t pid, double seconds) {
   return -1;
 }
 
+// `ryushi run` of the 2D dam break under a file-size limit of `kib` KiB (ulimit -f; ryushi ignores
+// SIGXFSZ, so a write past it fails with EFBIG, as on a full disk).
+test::CommandResult run_with_file_limit(int kib, const fs::path& out, const std::string& args) {
+  return test::run_command("bash -c 'ulimit -f " + std::to_string(kib) + "; exec " + std::string(RYUSHI_BINARY) +
+                           " run " + test::scene_path("dam_break_2d.toml") + " --out " + out.string() +
+                           " --quiet " + args + "'");
+}
+
 std::vector<fs::path> frames_of(const fs::path& out) {
   std::vector<fs::path> f;
   for (auto& e : fs::directory_iterator(out / "frames")) f.push_back(e.path());
@@ -148,9 +156,7 @@ TEST_CASE("checkpoint: a full disk stops the run with exit code 4 and a clear me
   auto out = dir / "out";
   // A 160 KiB file-size limit (ulimit -f; ryushi ignores SIGXFSZ, so writes fail with EFBIG):
   // this scene's frames (99 KB) fit, its checkpoint (every column, 256 KB) does not.
-  auto r = test::run_command("bash -c 'ulimit -f 160; exec " + bin + " run " + test::scene_path("dam_break_2d.toml") +
-                             " --out " + out.string() +
-                             " --quiet --set particles.spacing=0.02 --end-time 0.05 --checkpoint-interval 0.02'");
+  auto r = run_with_file_limit(160, out, "--set particles.spacing=0.02 --end-time 0.05 --checkpoint-interval 0.02");
   CHECK(r.code == kExitOutputFailed);
   CHECK_MESSAGE(r.output.find("could not write the output") != std::string::npos, r.output);
   CHECK_MESSAGE(r.output.find("checkpoint.h5.tmp: write failed: File too large") != std::string::npos, r.output);
@@ -209,10 +215,9 @@ TEST_CASE("checkpoint: a disk that fills after a checkpoint leaves that checkpoi
   // A 320 KiB file-size limit: the first checkpoints fit, but with a probe sample at every step
   // the checkpoint (which carries the probe rows, for resume) and probes.csv grow past it after
   // some thousand steps: the write that fails is a later checkpoint's (or probes.csv's).
-  auto r = test::run_command("bash -c 'ulimit -f 320; exec " + bin + " run " + test::scene_path("dam_break_2d.toml") +
-                             " --out " + out.string() +
-                             " --quiet --set particles.spacing=0.02 --set output.probe_interval=1e-7"
-                             " --end-time 2.0 --checkpoint-interval 0.02'");
+  auto r = run_with_file_limit(320, out,
+                               "--set particles.spacing=0.02 --set output.probe_interval=1e-7"
+                               " --end-time 2.0 --checkpoint-interval 0.02");
   REQUIRE(r.code == kExitOutputFailed);
   CHECK_MESSAGE(r.output.find(".tmp: write failed: File too large") != std::string::npos, r.output);
   CHECK(!fs::exists(out / "probes.csv.tmp"));

@@ -119,21 +119,19 @@ def fastest_within(candidates, budget):
     return ok[0][1], ok[0][2]
 
 
-def plot_methods(results, names, error, png, title):
+def plot_series(series, ylabel, title, png):
+    """Error against wall time on log axes: series = [(label, [(wall, error, point label), ...]), ...]."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    for name in names:
-        rows = completed(results[name], error)
-        rows.sort(key=lambda r: float(r["wall_time_s"]))
-        xs = [float(r["wall_time_s"]) for r in rows]
-        ys = [float(r[error]) for r in rows]
-        ax.loglog(xs, ys, "o-", label=name.split("_")[-1].upper())
-        for r, x, y in zip(rows, xs, ys):
-            ax.annotate(f"d={r['particles.spacing']}", (x, y), textcoords="offset points", xytext=(4, 3), fontsize=7)
+    for label, pts in series:
+        pts = sorted(pts)
+        ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-", label=label)
+        for x, y, text in pts:
+            ax.annotate(text, (x, y), textcoords="offset points", xytext=(4, 3), fontsize=7)
     ax.set_xlabel("wall time, s (one core)")
-    ax.set_ylabel(error)
+    ax.set_ylabel(ylabel)
     ax.set_title(title)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(framealpha=0.6)
@@ -142,29 +140,20 @@ def plot_methods(results, names, error, png, title):
     plt.close(fig)
 
 
+def plot_methods(results, names, error, png, title):
+    series = [(name.split("_")[-1].upper(),
+               [(float(r["wall_time_s"]), float(r[error]), f"d={r['particles.spacing']}")
+                for r in completed(results[name], error)]) for name in names]
+    plot_series(series, error, title, png)
+
+
 def plot_poiseuille(results, png):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(7, 4.5))
-    for lap in ("standard", "corrected", "sph2"):
-        pts = []
-        for cells in POISEUILLE_CELLS:
-            for r in completed(results[f"operators_poiseuille_{cells}"], "profile_error"):
-                if r["method.viscous_laplacian"] == lap:
-                    pts.append((float(r["wall_time_s"]), float(r["profile_error"]), cells))
-        pts.sort()
-        ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-", label=lap)
-        for x, y, c in pts:
-            ax.annotate(f"l/d={c}", (x, y), textcoords="offset points", xytext=(4, 3), fontsize=7)
-    ax.set_xlabel("wall time, s (one core)")
-    ax.set_ylabel("profile_error")
-    ax.set_title("Poiseuille start-up (ISPH, t = 0.1 s): viscous Laplacian x resolution")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(framealpha=0.6)
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
-    plt.close(fig)
+    series = [(lap, [(float(r["wall_time_s"]), float(r["profile_error"]), f"l/d={cells}")
+                     for cells in POISEUILLE_CELLS
+                     for r in completed(results[f"operators_poiseuille_{cells}"], "profile_error")
+                     if r["method.viscous_laplacian"] == lap])
+              for lap in ("standard", "corrected", "sph2")]
+    plot_series(series, "profile_error", "Poiseuille start-up (ISPH, t = 0.1 s): viscous Laplacian x resolution", png)
 
 
 def at_equal_time(rows, error, wall):
