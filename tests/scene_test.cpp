@@ -3,6 +3,7 @@
 #include "app/exit_codes.hpp"
 #include "app/run.hpp"
 #include "scene/scene.hpp"
+#include "scene_error.hpp"
 #include "test_util.hpp"
 
 using namespace ryushi;
@@ -34,17 +35,7 @@ std::string error_of(std::string text, const std::string& from = "", const std::
     REQUIRE(pos != std::string::npos);
     text.replace(pos, from.size(), to);
   }
-  // Four test cases call this from parallel ctest processes: each call gets its own folder.
-  auto path = test::unique_scratch("scene_errors") / "bad.toml";
-  test::write_text(path, text);
-  try {
-    load_scene(path.string(), sets);
-  } catch (const SceneError& e) {
-    std::string msg = e.what();
-    auto cut = msg.find("bad.toml");
-    return cut == std::string::npos ? msg : msg.substr(cut);
-  }
-  return "";
+  return test::scene_error(text, sets);
 }
 
 std::string valid_with_domain_min() {

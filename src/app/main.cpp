@@ -70,6 +70,9 @@ int main(int argc, char** argv) {
   auto* check_cmd = app.add_subcommand("check", "Validate a scene file without running it.");
   check_cmd->add_option("scene", check_path, "Scene file (TOML)")->required();
   check_cmd->add_option("--set", check_sets, "Override a scene key: section.key=value (repeatable)");
+  std::string check_write_initial;
+  check_cmd->add_option("--write-initial", check_write_initial,
+                        "Also write the particles the scene makes (every column) to DIR/particles.xdmf + DIR/frames/");
 
   bool markdown = false;
   auto* keys_cmd = app.add_subcommand("keys", "Print the scene-file reference (every section and key).");
@@ -138,7 +141,7 @@ int main(int argc, char** argv) {
   if (*run_cmd) return run_scene(run);
   if (*resume_cmd) return resume_run(resume);
   if (*sweep_cmd) return run_sweep(sweep);
-  if (*check_cmd) return check_scene(check_path, check_sets);
+  if (*check_cmd) return check_scene(check_path, check_sets, check_write_initial);
   if (*patch_cmd) {
     try {
       auto r = run_patch_test(patch);

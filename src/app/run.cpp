@@ -669,7 +669,7 @@ int resume_run(const ResumeOptions& ro) {
   return run_loaded(opt, file, c.scene.dimension);
 }
 
-int check_scene(const std::string& path, const std::vector<std::string>& sets) {
+int check_scene(const std::string& path, const std::vector<std::string>& sets, const std::string& write_initial) {
   try {
     Scene scene = load_scene(path, sets);
     auto build = [&](auto dim) {
@@ -681,6 +681,19 @@ int check_scene(const std::string& path, const std::vector<std::string>& sets) {
       Scheduler<D> s(std::move(method.pipeline), world, res, profiler);
       std::printf("%s: OK (%dD %s, %zu particles, %zu systems in the step graph)\n", path.c_str(), D,
                   scene.method.c_str(), world.size(), s.pipeline().size());
+      if (write_initial.empty()) return;
+      // Every column the method made at set-up (wall normals, layers, areas, ...), not only
+      // the run's output fields: this frame is for inspecting the geometry.
+      std::vector<std::string> fields;
+      const auto defaults = default_frame_fields();
+      for (auto& name : world.column_names())
+        if (std::find(defaults.begin(), defaults.end(), name) == defaults.end()) fields.push_back(name);
+      const fs::path dir(write_initial);
+      fs::create_directories(dir / "frames");
+      const std::string name = "frames/frame_00000.h5";
+      auto written = write_frame<D>(dir / name, world, fields, 0.0, 0);
+      write_text_atomic(dir / "particles.xdmf", xdmf_document({{name, 0.0, world.size(), written}}));
+      std::printf("initial particles: %s (open in ParaView)\n", (dir / "particles.xdmf").string().c_str());
     };
     if (scene.dimension == 2)
       build(std::integral_constant<int, 2>{});
@@ -690,6 +703,12 @@ int check_scene(const std::string& path, const std::vector<std::string>& sets) {
   } catch (const SceneError& e) {
     std::fprintf(stderr, "ryushi: %s\n", e.what());
     return kExitBadInput;
+  } catch (const OutputError& e) {
+    std::fprintf(stderr, "ryushi: %s\n", e.what());
+    return kExitOutputFailed;
+  } catch (const fs::filesystem_error& e) {
+    std::fprintf(stderr, "ryushi: %s\n", e.what());
+    return kExitOutputFailed;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ryushi: internal error: %s\n", e.what());
     return kExitInternal;

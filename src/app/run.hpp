@@ -32,6 +32,8 @@ struct ResumeOptions {
 int run_scene(const RunOptions& options);
 int resume_run(const ResumeOptions& options);
 // Validates a scene (and builds its pipeline without running it); returns the exit code.
-int check_scene(const std::string& scene, const std::vector<std::string>& sets);
+// Loads the scene and builds its method; with write_initial, also writes the particles it made
+// (fluid, walls, with normals and kinds) as frame 0 of DIR/particles.xdmf, to look at in ParaView.
+int check_scene(const std::string& scene, const std::vector<std::string>& sets, const std::string& write_initial = "");
 
 }  // namespace ryushi

@@ -78,7 +78,9 @@ void populate_isph_world(const Scene& s, const IsphParameters<D>& p, World<D>& w
   // Incompressible: density rho0 everywhere; the hydrostatic pressure is the first solve's guess.
   append_scene_particles<D>(
       s, p.rho0, world,
-      [&](double depth) { return std::pair{p.rho0, s.hydrostatic_init ? p.rho0 * g_up * depth : 0.0}; },
+      [&](double depth, double given) {
+        return std::pair{p.rho0, !std::isnan(given) ? given : s.hydrostatic_init ? p.rho0 * g_up * depth : 0.0};
+      },
       [](int) { return kWall; }, [](int layer) { return layer == 1; });
   // The normals of the kept (layer-1) wall particles, in the order they were appended.
   auto particles = scene_particles<D>(s);

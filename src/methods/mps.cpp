@@ -64,8 +64,8 @@ void populate_mps_world(const Scene& s, const MpsParameters<D>& p, World<D>& wor
   // Incompressible: density rho0 everywhere; the hydrostatic pressure is the first solve's guess.
   append_scene_particles<D>(
       s, p.rho0, world,
-      [&](double depth) {
-        return std::pair{p.rho0, s.hydrostatic_init ? p.rho0 * g_up * depth : 0.0};
+      [&](double depth, double given) {
+        return std::pair{p.rho0, !std::isnan(given) ? given : s.hydrostatic_init ? p.rho0 * g_up * depth : 0.0};
       },
       [&](int layer) { return layer <= s.wall_pressure_layers ? kWall : kDummy; });
 }

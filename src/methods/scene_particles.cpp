@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "ecs/lattice.hpp"
+#include "scene/block_fields.hpp"
 
 namespace ryushi {
 
@@ -15,12 +17,13 @@ SceneParticles<D> scene_particles(const Scene& s) {
   // [particles] disorder: one generator over the fluid in lattice order, so a seed gives one set.
   std::mt19937_64 rng(s.seed);
   std::uniform_real_distribution<double> shake(-s.disorder * d, s.disorder * d);
-  for (auto& b : s.fluid) {
+  for (std::size_t index = 0; index < s.fluid.size(); ++index) {
+    const FluidBlock& b = s.fluid[index];
+    const BlockFields fields(b, index);
     Vec<D> lo = scene_vector<D>(b.min);
     std::array<long, D> from{}, to{};
     for (int a = 0; a < D; ++a) to[a] = std::lround((b.max[a] - b.min[a]) / d);
     double top = b.min[D - 1] + to[D - 1] * d;
-    Vec<D> velocity = b.velocity.empty() ? Vec<D>::Zero() : scene_vector<D>(b.velocity);
     Vec<D> centre = 0.5 * (scene_vector<D>(b.min) + scene_vector<D>(b.max));
     for_each_lattice_point<D>(lo, d, from, to, [&](const Vec<D>& lattice) {
       Vec<D> x = lattice;
@@ -28,7 +31,10 @@ SceneParticles<D> scene_particles(const Scene& s) {
         for (int a = 0; a < D; ++a) x[a] += shake(rng);
       out.fluid.push_back(x);
       out.depth.push_back(top - x[D - 1]);
-      Vec<D> u = velocity;
+      Vec<D> u;
+      for (int a = 0; a < D; ++a) u[a] = fields.velocity(a, x.data(), D);
+      out.pressure.push_back(fields.has_pressure() ? fields.pressure(x.data(), D)
+                                                   : std::numeric_limits<double>::quiet_NaN());
       if constexpr (D == 2) u += b.angular_velocity * Vec<D>(x[1] - centre[1], -(x[0] - centre[0]));
       out.fluid_velocity.push_back(u);
     });

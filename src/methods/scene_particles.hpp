@@ -20,6 +20,7 @@ struct SceneParticles {
   std::vector<Vec<D>> fluid;
   std::vector<double> depth;
   std::vector<Vec<D>> fluid_velocity;  // the block's initial velocity and rotation
+  std::vector<double> pressure;        // the block's initial pressure; NaN: the method's own start
   std::vector<Vec<D>> wall;
   std::vector<int> wall_layer;
   // Unit normal out of the fluid into the wall: along the axes on which the particle lies
@@ -31,8 +32,8 @@ template <int D>
 SceneParticles<D> scene_particles(const Scene& scene);
 
 // Appends the scene's particles to the world: fluid with the blocks' initial velocities,
-// (density, pressure) = fluid_state(depth) and mass = density * d^D (each lattice cell holds its
-// fluid), then the wall particles with kind = wall_kind(layer), density rho0 and mass rho0 d^D;
+// (density, pressure) = fluid_state(depth, pressure) (pressure: the block's given initial
+// pressure, NaN where none) and mass = density * d^D (each lattice cell holds its fluid), then the wall particles with kind = wall_kind(layer), density rho0 and mass rho0 d^D;
 // a method that keeps only some layers drops the others with keep_layer.
 template <int D, class FluidState, class WallKind, class KeepLayer = bool (*)(int)>
 void append_scene_particles(
@@ -61,7 +62,7 @@ void append_scene_particles(
     std::size_t i = first + k;
     x[i] = particles.fluid[k];
     v[i] = particles.fluid_velocity[k];
-    auto [density, pressure] = fluid_state(particles.depth[k]);
+    auto [density, pressure] = fluid_state(particles.depth[k], particles.pressure[k]);
     rho[i] = density;
     pr[i] = pressure;
     m[i] = density * volume;

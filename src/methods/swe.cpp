@@ -9,6 +9,7 @@
 
 #include "ecs/lattice.hpp"
 #include "methods/method.hpp"
+#include "scene/block_fields.hpp"
 #include "systems/splitting/particle_splitting.hpp"
 #include "systems/swe/ghost_images.hpp"
 #include "systems/swe/ritter.hpp"
@@ -48,16 +49,17 @@ struct InitialWater {
 InitialWater initial_water(const Scene& s, const Bed& bed) {
   InitialWater out;
   const double d = s.spacing;
-  for (auto& b : s.fluid) {
+  for (std::size_t index = 0; index < s.fluid.size(); ++index) {
+    const FluidBlock& b = s.fluid[index];
+    const BlockFields fields(b, index);
     std::array<long, 2> from{}, to{};
     for (int a = 0; a < 2; ++a) to[a] = std::lround((b.max[a] - b.min[a]) / d);
-    Vec<2> velocity = b.velocity.empty() ? Vec<2>::Zero() : scene_vector<2>(b.velocity);
     for_each_lattice_point<2>(scene_vector<2>(b.min), d, from, to, [&](const Vec<2>& x) {
       if (bed.raster && bed.raster->nodata_at(x[0], x[1])) return;  // dry high ground
       double h = std::isnan(b.depth) ? b.surface_elevation - bed.elevation(x[0], x[1]) : b.depth;
       if (!(h > 0)) return;  // above the surface: dry
       out.x.push_back(x);
-      out.v.push_back(velocity);
+      out.v.push_back(Vec<2>(fields.velocity(0, x.data(), 2), fields.velocity(1, x.data(), 2)));
       out.depth.push_back(h);
     });
   }

@@ -50,8 +50,8 @@ void populate_world(const Scene& s, const WcsphParameters<D>& p, World<D>& world
   // column starts in equilibrium (mass = that compressed density times d^D).
   append_scene_particles<D>(
       s, p.rho0, world,
-      [&](double depth) {
-        double rho = p.density(s.hydrostatic_init ? p.rho0 * g_up * depth : 0.0);
+      [&](double depth, double given) {
+        double rho = p.density(!std::isnan(given) ? given : s.hydrostatic_init ? p.rho0 * g_up * depth : 0.0);
         return std::pair{rho, p.pressure(rho)};
       },
       [](int) { return kWall; });

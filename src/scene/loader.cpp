@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include "methods/system_registry.hpp"
+#include "scene/expression.hpp"
 #include "scene/overlaps.hpp"
 #include "scene/scene.hpp"
 #include "scene/schema.hpp"
@@ -48,13 +49,19 @@ class Validator {
     fail_at(node ? &node->source() : nullptr, where_path, msg);
   }
   [[noreturn]] void fail_at(const toml::source_region* src, const std::string& where_path, const std::string& msg) const {
+    throw SceneError(location_at(src, where_path) + ": " + msg);
+  }
+  // "file:line:column" of a key, or the `--set` that gave it.
+  std::string location(const toml::node* node, const std::string& where_path) const {
+    return location_at(node ? &node->source() : nullptr, where_path);
+  }
+  std::string location_at(const toml::source_region* src, const std::string& where_path) const {
     auto o = overridden.find(where_path);
-    if (o != overridden.end()) throw SceneError(o->second + ": " + msg);
+    if (o != overridden.end()) return o->second;
     std::ostringstream out;
     out << path_;
     if (src && src->begin) out << ":" << src->begin.line << ":" << src->begin.column;
-    out << ": " << msg;
-    throw SceneError(out.str());
+    return out.str();
   }
 
   int dimension = 2;
@@ -100,6 +107,14 @@ class Validator {
         fail(&node, path, m.str());
       }
     };
+    auto per_axis_array = [&] {  // an array with one entry per axis
+      auto* arr = node.as_array();
+      if (!arr) bad_type();
+      if (static_cast<int>(arr->size()) != dimension)
+        fail(&node, path, "'" + spec.key + "' in " + label + " has " + std::to_string(arr->size()) +
+                              " values; the scene is " + std::to_string(dimension) + "D");
+      return arr;
+    };
     switch (spec.type) {
       case KeyType::Integer:
         if (!node.is_integer()) bad_type();
@@ -126,11 +141,7 @@ class Validator {
       }
       case KeyType::Vector:
       case KeyType::BoolVector: {
-        auto* arr = node.as_array();
-        if (!arr) bad_type();
-        if (static_cast<int>(arr->size()) != dimension)
-          fail(&node, path, "'" + spec.key + "' in " + label + " has " + std::to_string(arr->size()) +
-                                " values; the scene is " + std::to_string(dimension) + "D");
+        auto* arr = per_axis_array();
         for (auto& e : *arr) {
           if (spec.type == KeyType::Vector) {
             if (!e.is_number()) bad_type();
@@ -149,6 +160,32 @@ class Validator {
           if (!e.is_string()) bad_type();
         break;
       }
+      case KeyType::FieldVector: {
+        auto* arr = per_axis_array();
+        for (std::size_t a = 0; a < arr->size(); ++a)
+          check_field(arr->get(a), spec, label + ", axis " + std::to_string(a), path, bad_type);
+        break;
+      }
+      case KeyType::FieldValue:
+        check_field(&node, spec, label, path, bad_type);
+        break;
+    }
+  }
+
+  // A number (finite) or an expression that muparser compiles.
+  template <class BadType>
+  void check_field(toml::node* node, const KeySpec& spec, const std::string& label, const std::string& path,
+                   BadType&& bad_type) {
+    if (node->is_number()) {
+      if (!std::isfinite(*node->value<double>())) fail(node, path, "'" + spec.key + "' in " + label + " must be finite");
+      return;
+    }
+    if (!node->is_string()) bad_type();
+    const std::string text = *node->value<std::string>();
+    try {
+      Expression{text};
+    } catch (const ExpressionError& e) {
+      fail(node, path, "'" + spec.key + "' in " + label + ": expression \"" + text + "\": " + e.what());
     }
   }
 
@@ -466,8 +503,30 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   };
   if (auto* arr = root["fluid"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
-      FluidBlock b{vec_of(*where("fluid", i, "min")), vec_of(*where("fluid", i, "max")), {}, 0.0};
-      if (auto* v = where("fluid", i, "velocity")) b.velocity = vec_of(*v);
+      FluidBlock b;
+      b.min = vec_of(*where("fluid", i, "min"));
+      b.max = vec_of(*where("fluid", i, "max"));
+      if (auto* v = where("fluid", i, "velocity")) {
+        b.velocity.assign(D, 0.0);
+        b.velocity_expression.assign(D, "");
+        for (int a = 0; a < D; ++a) {
+          const toml::node& e = *v->as_array()->get(a);
+          if (e.is_string())
+            b.velocity_expression[a] = *e.value<std::string>();
+          else
+            b.velocity[a] = *e.value<double>();
+        }
+        b.velocity_where = val.location(v, path_of("fluid", i, "velocity"));
+      }
+      if (auto* pr = where("fluid", i, "pressure")) {
+        if (sc.method == "swe")
+          val.fail(pr, path_of("fluid", i, "pressure"), "[[fluid]] #" + std::to_string(i) + ": pressure is for methods wcsph, mps and isph (swe sets depth)");
+        std::ostringstream number;
+        number.precision(17);
+        if (pr->is_number()) number << *pr->value<double>();
+        b.pressure_expression = pr->is_string() ? *pr->value<std::string>() : number.str();
+        b.pressure_where = val.location(pr, path_of("fluid", i, "pressure"));
+      }
       b.angular_velocity = *root["fluid"][i]["angular_velocity"].value<double>();
       if (auto v = root["fluid"][i]["depth"].value<double>()) b.depth = *v;
       if (auto v = root["fluid"][i]["surface_elevation"].value<double>()) b.surface_elevation = *v;

@@ -24,6 +24,11 @@ class SceneError : public std::runtime_error {
 struct FluidBlock {
   std::vector<double> min, max;
   std::vector<double> velocity;   // initial velocity (empty: at rest)
+  // Initial fields as formulas of x, y, z (scene/expression.hpp): per axis, "" where `velocity`
+  // holds a number; pressure "" for the method's own start (hydrostatic). *_where is the key's
+  // "file:line:column", for errors found when the particles are made.
+  std::vector<std::string> velocity_expression;
+  std::string pressure_expression, velocity_where, pressure_where;
   double angular_velocity = 0;    // 2D: initial rigid rotation (omega (y - yc), -omega (x - xc))
   // swe: the water depth, or the surface elevation (depth = surface - bed), NaN when not given.
   double depth = std::numeric_limits<double>::quiet_NaN();

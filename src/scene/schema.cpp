@@ -164,7 +164,8 @@ std::vector<SectionSpec> build() {
   s.push_back({"fluid", true, true, "A block of fluid on the lattice: particles at min + (k + 1/2) d.",
                {{"min", K::Vector, "m", "", "Lower corner.", true},
                 {"max", K::Vector, "m", "", "Upper corner.", true},
-                {"velocity", K::Vector, "m/s", "(at rest)", "Initial velocity of every particle of the block."},
+                {"velocity", K::FieldVector, "m/s", "(at rest)", "Initial velocity of the block's particles, one entry per axis: a number, or an expression of the particle's x, y, z as a string (muparser syntax: + - * / ^, sin, cos, tan, exp, log, sqrt, abs, min, max, pi, e, `c ? a : b`), e.g. [\"sin(2*pi*x)*cos(2*pi*y)\", \"-cos(2*pi*x)*sin(2*pi*y)\"]. A bad expression is an error at the key with the parser's message; a value that is not finite at some particle is an error naming the particle's place."},
+                {"pressure", K::FieldValue, "Pa", "(hydrostatic)", "Initial pressure of the block's particles: a number or an expression of x, y, z (as for `velocity`), in place of the hydrostatic start (methods wcsph, mps, isph). WCSPH gives each particle the density that its equation of state maps to this pressure; MPS and ISPH take it as the first pressure solve's guess and for output."},
                 {"angular_velocity", K::Float, "1/s", "0.0", "2D: initial rigid rotation about the block's centre, v = (omega (y - yc), -omega (x - xc)) (clockwise for omega > 0; the rotating square patch), added to `velocity`."},
                 positive("depth", "m", "(none)", "swe: the water depth of the block (one of depth and surface_elevation is required)."),
                 {"surface_elevation", K::Float, "m", "(none)", "swe: the water surface of the block; depth = surface_elevation - bed, and lattice points where that is not positive are dry (no particle): a lake over a bumpy bed."}}});
@@ -245,6 +246,8 @@ std::string type_name(KeyType t) {
     case KeyType::Vector: return "array of numbers (one per axis)";
     case KeyType::BoolVector: return "array of booleans (one per axis)";
     case KeyType::StringList: return "array of strings";
+    case KeyType::FieldVector: return "array of numbers or expressions (one per axis)";
+    case KeyType::FieldValue: return "number or expression";
   }
   return "?";
 }

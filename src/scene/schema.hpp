@@ -8,7 +8,8 @@
 
 namespace ryushi {
 
-enum class KeyType { Integer, Float, Bool, String, Vector, BoolVector, StringList };
+// FieldVector / FieldValue: numbers or expressions of x, y, z (scene/expression.hpp).
+enum class KeyType { Integer, Float, Bool, String, Vector, BoolVector, StringList, FieldVector, FieldValue };
 
 struct KeySpec {
   std::string key;
