@@ -63,6 +63,8 @@ inline constexpr Component<Vector> wall_velocity{"wall_velocity"};
 inline constexpr Component<Vector> position_start{"position_start"};
 inline constexpr Component<Vector> velocity_start{"velocity_start"};
 inline constexpr Component<Scalar> density_start{"density_start"};
+// The [[solid]] a wall particle belongs to (-1: a container wall, or fluid); only in scenes with solids.
+inline constexpr Component<Flags> body{"body"};
 }  // namespace components
 
 }  // namespace ryushi

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "ecs/lattice.hpp"
+#include "geometry/solid_shape.hpp"
 #include "scene/block_fields.hpp"
 
 namespace ryushi {
@@ -17,6 +18,15 @@ SceneParticles<D> scene_particles(const Scene& s) {
   // [particles] disorder: one generator over the fluid in lattice order, so a seed gives one set.
   std::mt19937_64 rng(s.seed);
   std::uniform_real_distribution<double> shake(-s.disorder * d, s.disorder * d);
+  std::vector<SolidShape<D>> solids;
+  for (auto& spec : s.solids) solids.emplace_back(spec);
+  // A block with an obstacle in it: lattice points within half a spacing of a solid are not fluid
+  // (the solid's first layer lies half a spacing inside its surface).
+  auto inside_solid = [&](const Vec<D>& x) {
+    for (auto& shape : solids)
+      if (shape.signed_distance(x) < 0.5 * d * (1 - 1e-9)) return true;
+    return false;
+  };
   for (std::size_t index = 0; index < s.fluid.size(); ++index) {
     const FluidBlock& b = s.fluid[index];
     const BlockFields fields(b, index);
@@ -26,6 +36,7 @@ SceneParticles<D> scene_particles(const Scene& s) {
     double top = b.min[D - 1] + to[D - 1] * d;
     Vec<D> centre = 0.5 * (scene_vector<D>(b.min) + scene_vector<D>(b.max));
     for_each_lattice_point<D>(lo, d, from, to, [&](const Vec<D>& lattice) {
+      if (!solids.empty() && inside_solid(lattice)) return;
       Vec<D> x = lattice;
       if (s.disorder > 0)
         for (int a = 0; a < D; ++a) x[a] += shake(rng);
@@ -58,7 +69,19 @@ SceneParticles<D> scene_particles(const Scene& s) {
       out.wall.push_back(q);
       out.wall_layer.push_back(static_cast<int>(std::lround(outside / d + 0.5)));
       out.wall_normal.push_back(normal.normalized());
+      out.wall_velocity.push_back(Vec<D>::Zero());
+      out.wall_body.push_back(-1);
     });
+  }
+  for (std::size_t k = 0; k < solids.size(); ++k) {
+    const Vec<D> velocity = scene_vector<D>(s.solids[k].velocity);
+    for (auto& particle : solids[k].shell(d)) {
+      out.wall.push_back(particle.position);
+      out.wall_layer.push_back(particle.layer);
+      out.wall_normal.push_back(particle.normal);
+      out.wall_velocity.push_back(velocity);
+      out.wall_body.push_back(static_cast<int>(k));
+    }
   }
   return out;
 }

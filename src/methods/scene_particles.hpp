@@ -3,7 +3,10 @@
 // on the lattice (with their depth below the block's top, for hydrostatic starts) and wall
 // containers (with each wall particle's layer, 1 = touching the fluid). Every method fills its
 // world from this one description.
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -26,6 +29,8 @@ struct SceneParticles {
   // Unit normal out of the fluid into the wall: along the axes on which the particle lies
   // outside the box, weighted by how far, so a layer-1 corner particle gets the bisector.
   std::vector<Vec<D>> wall_normal;
+  std::vector<Vec<D>> wall_velocity;  // a [[solid]]'s prescribed velocity; zero for containers
+  std::vector<int> wall_body;         // the [[solid]]'s index; -1 for containers
 };
 
 template <int D>
@@ -44,11 +49,14 @@ void append_scene_particles(
   {  // only the kept wall layers
     SceneParticles<D> kept = particles;
     kept.wall.clear(), kept.wall_layer.clear(), kept.wall_normal.clear();
+    kept.wall_velocity.clear(), kept.wall_body.clear();
     for (std::size_t k = 0; k < particles.wall.size(); ++k)
       if (keep_layer(particles.wall_layer[k])) {
         kept.wall.push_back(particles.wall[k]);
         kept.wall_layer.push_back(particles.wall_layer[k]);
         kept.wall_normal.push_back(particles.wall_normal[k]);
+        kept.wall_velocity.push_back(particles.wall_velocity[k]);
+        kept.wall_body.push_back(particles.wall_body[k]);
       }
     particles = std::move(kept);
   }
@@ -69,12 +77,21 @@ void append_scene_particles(
   }
   std::size_t wfirst = world.append(particles.wall.size(), kWall);
   auto& kind = world.column(components::kind);
+  // Only a scene with [[solid]] bodies pays for the column that tells them apart (force probes).
+  std::span<std::int32_t> body;
+  if (!s.solids.empty()) {
+    auto& column = world.ensure(components::body);
+    std::fill(column.begin(), column.end(), -1);
+    body = column;
+  }
   for (std::size_t k = 0; k < particles.wall.size(); ++k) {
     std::size_t i = wfirst + k;
     kind[i] = wall_kind(particles.wall_layer[k]);
     x[i] = particles.wall[k];
+    v[i] = particles.wall_velocity[k];  // a moving body's particles stay put; walls use v as the surface's
     m[i] = rho0 * volume;
     rho[i] = rho0;
+    if (!body.empty()) body[i] = particles.wall_body[k];
   }
 }
 

@@ -67,7 +67,7 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
 
   std::vector<SystemPtr<D>> list{neighbours};
   auto stage = [&] {
-    if (!s.walls.empty()) list.push_back(wall);
+    if (!s.walls.empty() || !s.solids.empty()) list.push_back(wall);
     if (p.delta > 0) list.push_back(gradient);
     list.push_back(forces);
   };

@@ -598,6 +598,53 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       sc.walls.push_back(std::move(w));
     }
   }
+  if (auto* arr = root["solid"].as_array()) {
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      auto t = root["solid"][i];
+      const std::string label = "[[solid]] #" + std::to_string(i);
+      auto need = [&](bool ok, const char* key, const std::string& what) {
+        if (!ok) val.fail(where("solid", i, key) ? where("solid", i, key) : &(*arr)[i], path_of("solid", i, key), label + " " + what);
+      };
+      need(!swe, "shape", "is for methods wcsph, mps and isph (swe walls are [[wall]] mirror lines)");
+      SolidSpec b;
+      b.name = t["name"].value_or("solid" + std::to_string(i));
+      b.shape = *t["shape"].value<std::string>();
+      const int covering = isph ? 1 : static_cast<int>(std::ceil(sc.support_radius() / sc.spacing - 1e-9));
+      b.layers = static_cast<int>(t["layers"].value_or(static_cast<long long>(covering)));
+      b.velocity.assign(D, 0.0);
+      if (auto* v = where("solid", i, "velocity")) b.velocity = vec_of(*v);
+      if (b.shape == "box") {
+        need(where("solid", i, "min") && where("solid", i, "max"), "min", "(a box) needs min and max");
+        b.min = vec_of(*where("solid", i, "min"));
+        b.max = vec_of(*where("solid", i, "max"));
+        for (int a = 0; a < D; ++a) need(b.max[a] > b.min[a], "max", "is empty (max <= min on axis " + std::to_string(a) + ")");
+      } else {
+        need(where("solid", i, "centre") && where("solid", i, "radius"), "centre", "(a " + b.shape + ") needs centre and radius");
+        b.centre = vec_of(*where("solid", i, "centre"));
+        b.radius = *t["radius"].value<double>();
+        b.axis = static_cast<int>(*t["axis"].value<long long>());
+        b.min = b.centre, b.max = b.centre;
+        for (int a = 0; a < D; ++a) {
+          const bool along = D == 3 && b.shape == "cylinder" && a == b.axis;
+          b.min[a] = along ? sc.domain_min[a] : b.centre[a] - b.radius;
+          b.max[a] = along ? sc.domain_max[a] : b.centre[a] + b.radius;
+        }
+      }
+      need(inside(b.min, b.max), b.shape == "box" ? "min" : "centre", "lies (partly) outside the domain");
+      need(!isph || b.layers == 1, "layers", "method isph uses one layer of wall particles (with normals); leave layers out or set 1");
+      for (auto& other : sc.solids)
+        need(other.name != b.name, "name", "has the name of another solid, '" + b.name + "'");
+      for (std::size_t k = 0; k < sc.solids.size(); ++k)
+        need(!boxes_overlap(b.min, b.max, sc.solids[k].min, sc.solids[k].max, 1e-6 * sc.spacing), "shape",
+             "overlaps [[solid]] '" + sc.solids[k].name + "' (their particles would sit on each other)");
+      FluidBlock extent;
+      extent.min = b.min, extent.max = b.max;
+      for (std::size_t k = 0; k < sc.walls.size(); ++k)
+        need(!fluid_in_wall_layers(extent, sc.walls[k], sc.spacing, 1e-6 * sc.spacing), "shape",
+             "reaches into the particle layers of [[wall]] #" + std::to_string(k) + " (their particles would sit on each other)");
+      sc.solids.push_back(std::move(b));
+    }
+  }
   // Fluid on top of wall particles or of other fluid: r = 0 pairs, not a flow. Shallow-water walls
   // are mirrored ghosts, not particles, so only the fluid-fluid test applies there.
   const double overlap_tol = 1e-6 * sc.spacing;
@@ -642,6 +689,22 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
         val.fail(&(*arr)[i], path_of("probe", i, "position"), "[[probe]] '" + p.name + "' of type " + p.type + " needs a position");
       if (!p.position.empty() && !inside(p.position, p.position))
         val.fail(where("probe", i, "position"), path_of("probe", i, "position"), "[[probe]] '" + p.name + "' lies outside the domain");
+      if (p.type == "force") {
+        if (sc.method != "wcsph")
+          val.fail(where("probe", i, "type"), path_of("probe", i, "type"),
+                   "[[probe]] '" + p.name + "': force probes sum WCSPH's pair forces; method " + sc.method +
+                       " has its own operators (not done)");
+        auto solid_name = root["probe"][i]["solid"].value<std::string>();
+        if (!solid_name)
+          val.fail(&(*arr)[i], path_of("probe", i, "solid"), "[[probe]] '" + p.name + "' of type force needs `solid`, the name of a [[solid]]");
+        for (std::size_t k = 0; k < sc.solids.size(); ++k)
+          if (sc.solids[k].name == *solid_name) p.solid = static_cast<int>(k);
+        if (p.solid < 0)
+          val.fail(where("probe", i, "solid"), path_of("probe", i, "solid"), "[[probe]] '" + p.name + "': there is no [[solid]] named '" + *solid_name + "'");
+        p.axis = static_cast<int>(*root["probe"][i]["axis"].value<long long>());
+        if (p.axis >= D)
+          val.fail(where("probe", i, "axis"), path_of("probe", i, "axis"), "[[probe]] '" + p.name + "': axis must be below the dimension");
+      }
       if (p.type == "front_depth" && !swe)
         val.fail(where("probe", i, "type"), path_of("probe", i, "type"), "[[probe]] '" + p.name + "': front_depth is for method swe");
       for (auto& q : sc.probes)

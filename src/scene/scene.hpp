@@ -40,6 +40,17 @@ struct WallBox {
   bool open_top = true;
   std::vector<bool> open_ends;  // per axis: no wall at either end (a channel's inlet and outlet)
 };
+// [[solid]]: an obstacle, a plate or a lid, as `layers` of wall particles inside its shape
+// (src/geometry/solid_shape.hpp). Fluid within half a spacing of it is cut out of the blocks.
+struct SolidSpec {
+  std::string name, shape;         // shape: box, cylinder (a disc in 2D), sphere
+  std::vector<double> min, max;    // box
+  std::vector<double> centre;      // cylinder, sphere
+  double radius = 0;
+  int axis = 2;                    // 3D cylinder: the axis it runs along (through the whole domain)
+  int layers = 3;
+  std::vector<double> velocity;    // prescribed, constant (a lid, a plate); the particles stay put
+};
 // Fluid particles inside [min, max] at the start hold p = pressure + gradient . x (Dirichlet):
 // the inlet and outlet of an Eulerian ISPH channel.
 struct FixedPressureBox {
@@ -49,6 +60,7 @@ struct FixedPressureBox {
 struct ProbeSpec {
   std::string name, type;
   std::vector<double> position;
+  int solid = -1, axis = 0;  // force: the [[solid]]'s index and the component
 };
 // [[metric]] (src/metrics/metrics.hpp).
 struct MetricSpec {
@@ -132,6 +144,7 @@ struct Scene {
   std::vector<std::string> output_fields;
   std::vector<FluidBlock> fluid;
   std::vector<WallBox> walls;
+  std::vector<SolidSpec> solids;
   std::vector<FixedPressureBox> fixed_pressure;
   std::vector<ProbeSpec> probes;
   std::vector<MetricSpec> metrics;

@@ -175,6 +175,17 @@ std::vector<SectionSpec> build() {
                 ranged({"layers", K::Integer, "", "(ceil(support radius / spacing))", "Wall thickness in particle layers; layers * spacing must cover the support radius."}, 1, 16),
                 {"open_top", K::Bool, "", "true", "Leave the upper side (last axis) open."},
                 {"open_ends", K::BoolVector, "", "(false on every axis)", "Per axis: no wall at either end of that axis (a channel's inlet and outlet, e.g. [true, false])."}}});
+  s.push_back({"solid", true, false,
+               "A solid body of wall particles: an obstacle in the flow, a plate, a lid (methods wcsph, mps, isph). The particles fill the shape's outer `layers` (its inside never meets the fluid); fluid lattice points within half a spacing of the shape are cut out of the [[fluid]] blocks (a block with an obstacle in it). With `velocity` the body moves the fluid next to it (no-slip walls with viscosity) while its particles stay put: a lid or a sliding plate. The pressure and viscous force of the fluid on it are `force` probes.",
+               {{"name", K::String, "", "(solid<N>)", "Name, for `force` probes."},
+                choice("shape", "", "box: [min, max]; cylinder: a disc of `radius` about `centre` in 2D, in 3D a circular cylinder along `axis` through the whole domain; sphere: a ball (3D; a disc in 2D). Box particles sit on the lattice min + (k + 1/2) d; a disc's and a sphere's on rings and spherical shells at depths (k - 1/2) d, each spaced by about d, so that every wall particle is a spacing from the fluid and has the exact normal.", {"box", "cylinder", "sphere"}, true),
+                {"min", K::Vector, "m", "", "box: lower corner."},
+                {"max", K::Vector, "m", "", "box: upper corner."},
+                {"centre", K::Vector, "m", "", "cylinder, sphere: centre (3D cylinder: any point on its axis)."},
+                positive("radius", "m", "", "cylinder, sphere: radius."),
+                ranged({"axis", K::Integer, "", "2", "3D cylinder: the axis (0, 1, 2) it runs along."}, 0, 2),
+                {"velocity", K::Vector, "m/s", "(at rest)", "Prescribed constant velocity of the body's surface (its particles do not move): the lid of a cavity, the moving plate of a Couette flow."},
+                ranged({"layers", K::Integer, "", "(as [[wall]]: ceil(support / spacing); isph 1)", "Thickness in particle layers, inward from the surface."}, 1, 16)}});
   s.push_back({"fixed_pressure", true, false,
                "isph, description = \"eulerian\": the fluid particles inside the box [min, max] hold the pressure p = pressure + gradient . x (a Dirichlet value: a channel's inlet or outlet). Make it at least a support radius long along the flow, so that the particles next to it have a full support. docs/isph.md.",
                {{"min", K::Vector, "m", "", "Lower corner.", true},
@@ -183,9 +194,11 @@ std::vector<SectionSpec> build() {
                 {"gradient", K::Vector, "Pa/m", "(zero)", "Pressure gradient across the box, so that a linear pressure drop continues into it."}}});
   s.push_back({"probe", true, false, "Measurements written to probes.csv (one column each).",
                {{"name", K::String, "", "", "Column name.", true},
-                choice("type", "", "pressure: kernel-interpolated (Shepard) fluid pressure at `position`; surge_front: max x of fluid particles + d/2; water_height: surface elevation of the water column standing on `position` (where the kernel-interpolated fill fraction, walls discounted, first falls below 1/2 going up; drops and wall films above a gap do not count; docs/output.md); kinetic_energy: sum of m |v|^2 / 2 over the fluid (J, per metre of depth in 2D); potential_energy: sum of -m g . x over the fluid (zero at the origin); particle_count: the number of fluid particles (grows with particle splitting); front_depth: swe only, the depth of the foremost particle (largest x).",
-                       {"pressure", "surge_front", "water_height", "kinetic_energy", "potential_energy", "particle_count", "front_depth"}, true),
-                {"position", K::Vector, "m", "", "Where to measure (pressure; for water_height the base of the vertical line, which reads this height when dry)."}}});
+                choice("type", "", "pressure: kernel-interpolated (Shepard) fluid pressure at `position`; surge_front: max x of fluid particles + d/2; water_height: surface elevation of the water column standing on `position` (where the kernel-interpolated fill fraction, walls discounted, first falls below 1/2 going up; drops and wall films above a gap do not count; docs/output.md); kinetic_energy: sum of m |v|^2 / 2 over the fluid (J, per metre of depth in 2D); potential_energy: sum of -m g . x over the fluid (zero at the origin); particle_count: the number of fluid particles (grows with particle splitting); front_depth: swe only, the depth of the foremost particle (largest x).; force: component `axis` of the force of the fluid on the [[solid]] named `solid` (N; N/m in 2D), pressure and viscosity, summed over the fluid-solid particle pairs with the WCSPH pair forces (symmetric pressure term, Morris viscosity against the body's velocity), the reaction to what the body does to the fluid",
+                       {"pressure", "surge_front", "water_height", "kinetic_energy", "potential_energy", "particle_count", "front_depth", "force"}, true),
+                {"position", K::Vector, "m", "", "Where to measure (pressure; for water_height the base of the vertical line, which reads this height when dry)."},
+                {"solid", K::String, "", "", "force: the [[solid]] (its name) the fluid pushes on."},
+                ranged({"axis", K::Integer, "", "0", "force: the component (0 = x, 1 = y, 2 = z)."}, 0, 2)}});
   s.push_back({"metric", true, false,
                "A run's error against a reference that ships with ryushi, written under \"metrics\" in summary.json and printed at the end (src/metrics/metrics.hpp; `ryushi sweep` collects them).",
                {{"name", K::String, "", "", "Name in summary.json.", true},

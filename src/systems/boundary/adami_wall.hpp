@@ -2,8 +2,9 @@
 // Generalised wall boundary condition (Adami, Hu & Adams 2012; seed 002 eqs. 27-28):
 // each wall particle takes the Shepard-weighted pressure of the fluid around it plus the
 // hydrostatic correction g . sum(rho_f (x_w - x_f) W), its density from the inverse equation of
-// state, and (when laminar viscosity is on) a ghost velocity 2 v_wall - v~ for no-slip.
-// Static walls: v_wall = 0.
+// state, and (when laminar viscosity is on) a ghost velocity 2 v_wall - v~ for no-slip, v_wall
+// being the wall particle's own velocity: zero for containers, a [[solid]]'s prescribed velocity
+// for a lid or a sliding plate (constant: no wall acceleration enters the pressure).
 #include "ecs/system.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
@@ -48,7 +49,7 @@ class AdamiWall final : public System<D> {
       double pw = sum_w > 0 ? (sum_p + p_.gravity.dot(sum_rho_r)) / sum_w : 0.0;
       p[w] = pw;
       rho[w] = p_.density(pw);
-      if (!ghost.empty()) ghost[w] = sum_w > 0 ? Vec<D>(-sum_v / sum_w) : Vec<D>::Zero();
+      if (!ghost.empty()) ghost[w] = sum_w > 0 ? Vec<D>(2 * v[w] - sum_v / sum_w) : v[w];
     });
   }
 

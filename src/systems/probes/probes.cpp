@@ -1,5 +1,7 @@
 #include "systems/probes/probes.hpp"
 
+#include "systems/probes/solid_force.hpp"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
@@ -107,6 +109,8 @@ std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const Wo
         if (kind[i] == kFluid) acc.first += kinetic ? 0.5 * m[i] * v[i].squaredNorm() : -m[i] * gravity.dot(x[i]);
       }, false);
       out.push_back(r.first);
+    } else if (probe.type == "force") {
+      out.push_back(solid_force<D>(probe.solid, world, kernel, domain)[probe.axis]);
     } else {  // water_height
       out.push_back(water_surface<D>(at, world, kernel, rho0, domain.max[D - 1], d));
     }

@@ -1,0 +1,120 @@
+#include "geometry/solid_shape.hpp"
+
+#include <algorithm>
+#include <numbers>
+
+#include "ecs/lattice.hpp"
+
+namespace ryushi {
+
+namespace {
+
+template <int D>
+Vec<D> to_vec(const std::vector<double>& v) {
+  Vec<D> out = Vec<D>::Zero();
+  for (int a = 0; a < D && a < static_cast<int>(v.size()); ++a) out[a] = v[a];
+  return out;
+}
+
+// Points on a circle of radius r, about d apart, starting at angle phase (in steps).
+std::vector<std::pair<double, double>> ring(double r, double d, double phase) {
+  const int n = std::max(1, static_cast<int>(std::lround(2 * std::numbers::pi * r / d)));
+  std::vector<std::pair<double, double>> out;
+  for (int j = 0; j < n; ++j) {
+    const double angle = 2 * std::numbers::pi * (j + phase) / n;
+    out.emplace_back(r * std::cos(angle), r * std::sin(angle));
+  }
+  return out;
+}
+
+}  // namespace
+
+template <int D>
+SolidShape<D>::SolidShape(const SolidSpec& spec)
+    : spec_(spec), lo_(to_vec<D>(spec.min)), hi_(to_vec<D>(spec.max)), centre_(to_vec<D>(spec.centre)) {}
+
+template <int D>
+double SolidShape<D>::signed_distance(const Vec<D>& x) const {
+  if (spec_.shape == "box") {
+    Vec<D> q = (x - 0.5 * (lo_ + hi_)).cwiseAbs() - 0.5 * (hi_ - lo_);
+    return q.cwiseMax(0.0).norm() + std::min(q.maxCoeff(), 0.0);
+  }
+  Vec<D> r = x - centre_;
+  if (D == 3 && spec_.shape == "cylinder") r[spec_.axis] = 0;
+  return r.norm() - spec_.radius;
+}
+
+template <int D>
+std::vector<ShellParticle<D>> SolidShape<D>::shell(double d) const {
+  return spec_.shape == "box" ? box_shell(d) : round_shell(d);
+}
+
+// On the lattice lo + (k + 1/2) d, the points within `layers` spacings of a face. The normal
+// points through the nearest face; at an edge or corner (equally near faces) it is their
+// bisector, as for a container's corners.
+template <int D>
+std::vector<ShellParticle<D>> SolidShape<D>::box_shell(double d) const {
+  std::array<long, D> from{}, to{};
+  for (int a = 0; a < D; ++a) to[a] = std::max(1L, std::lround((hi_[a] - lo_[a]) / d));
+  const Vec<D> centre = 0.5 * (lo_ + hi_), half = 0.5 * (hi_ - lo_);
+  std::vector<ShellParticle<D>> out;
+  for_each_lattice_point<D>(lo_, d, from, to, [&](const Vec<D>& x) {
+    const Vec<D> q = (x - centre).cwiseAbs() - half;  // minus the depth below each face pair
+    const double depth = -q.maxCoeff();
+    const int layer = static_cast<int>(std::ceil(depth / d - 1e-9));
+    if (layer > spec_.layers) return;
+    Vec<D> normal = Vec<D>::Zero();
+    for (int a = 0; a < D; ++a)
+      if (q[a] >= q.maxCoeff() - 1e-9 * d) normal[a] = x[a] > centre[a] ? -1.0 : 1.0;
+    out.push_back({x, std::max(layer, 1), normal.normalized()});
+  });
+  return out;
+}
+
+// Rings (2D disc, 3D cylinder: rings on the lattice along the axis) or shells (sphere) at the
+// depths (k - 1/2) d, k = 1..layers, with points about d apart: every layer-1 particle is half a
+// spacing inside the surface and has the exact radial normal.
+template <int D>
+std::vector<ShellParticle<D>> SolidShape<D>::round_shell(double d) const {
+  std::vector<ShellParticle<D>> out;
+  for (int k = 1; k <= spec_.layers; ++k) {
+    const double r = spec_.radius - (k - 0.5) * d;
+    if (r < 0.25 * d) {  // the middle: one particle, if there is room
+      if (r > -0.25 * d) out.push_back({centre_, k, Vec<D>::UnitX()});
+      break;
+    }
+    const double phase = 0.5 * (k % 2);  // stagger the layers
+    if constexpr (D == 2) {
+      for (auto [cx, cy] : ring(r, d, phase)) {
+        Vec<D> offset(cx, cy);
+        out.push_back({centre_ + offset, k, Vec<D>(-offset / r)});
+      }
+    } else if (spec_.shape == "cylinder") {
+      const int a0 = (spec_.axis + 1) % 3, a1 = (spec_.axis + 2) % 3;
+      const long n = std::max(1L, std::lround((hi_[spec_.axis] - lo_[spec_.axis]) / d));
+      for (long s = 0; s < n; ++s)
+        for (auto [cx, cy] : ring(r, d, phase)) {
+          Vec<D> offset = Vec<D>::Zero();
+          offset[a0] = cx, offset[a1] = cy;
+          Vec<D> x = centre_ + offset;
+          x[spec_.axis] = lo_[spec_.axis] + (s + 0.5) * d;
+          out.push_back({x, k, Vec<D>(-offset / r)});
+        }
+    } else {  // sphere: a Fibonacci lattice, 4 pi r^2 / d^2 points
+      const int n = std::max(1, static_cast<int>(std::lround(4 * std::numbers::pi * r * r / (d * d))));
+      const double golden = std::numbers::pi * (3 - std::sqrt(5.0));
+      for (int j = 0; j < n; ++j) {
+        const double z = 1 - 2 * (j + 0.5) / n, rho = std::sqrt(1 - z * z), angle = golden * j + phase;
+        Vec<D> unit = Vec<D>::Zero();
+        unit[0] = rho * std::cos(angle), unit[1] = rho * std::sin(angle), unit[2] = z;
+        out.push_back({centre_ + r * unit, k, Vec<D>(-unit)});
+      }
+    }
+  }
+  return out;
+}
+
+template class SolidShape<2>;
+template class SolidShape<3>;
+
+}  // namespace ryushi
