@@ -143,6 +143,12 @@ TEST_CASE("cli: exit codes and scene reference") {
   CHECK(ok.output.find("OK") != std::string::npos);
   CHECK(test::run_command(bin + " check " + test::scene_path("hydrostatic_2d.toml")).code == 0);
   CHECK(test::run_command(bin + " check " + test::scene_path("dam_break_3d.toml")).code == 0);
+  // Every shipped scene loads and builds (a renamed key or a moved mesh file breaks none unseen).
+  for (auto& e : std::filesystem::directory_iterator(test::source_dir() / "scenes")) {
+    if (e.path().extension() != ".toml") continue;
+    auto r = test::run_command(bin + " check " + e.path().string());
+    CHECK_MESSAGE(r.code == 0, e.path().filename() << ": " << r.output);
+  }
   auto bad_flag = test::run_command(bin + " run " + test::scene_path("dam_break_2d.toml") + " --threads zero");
   CHECK(bad_flag.code == 2);
   CHECK(bad_flag.output.find("ryushi: command line:") == 0);

@@ -36,11 +36,19 @@ double couette_shear_ratio(double t, double H, double nu) {
   return s;
 }
 
+SolidSpec round_spec(const std::string& shape, const std::vector<double>& centre, double radius, int layers) {
+  SolidSpec s;
+  s.shape = shape, s.centre = centre, s.radius = radius, s.layers = layers;
+  s.min = s.max = centre;
+  for (std::size_t a = 0; a < centre.size(); ++a) s.min[a] -= radius, s.max[a] += radius;
+  return s;
+}
+
 }  // namespace
 
 TEST_CASE("solid: shells have the layers, spacing and normals of their shape") {
   const double d = 0.01;
-  SolidSpec disc{"disc", "cylinder", {0.2, 0.2}, {0.4, 0.4}, {0.3, 0.3}, 0.1, 2, 3, {0.0, 0.0}};
+  SolidSpec disc = round_spec("cylinder", {0.3, 0.3}, 0.1, 3);
   auto rings = SolidShape<2>(disc).shell(d);
   std::size_t expected = 0;
   for (int k = 1; k <= 3; ++k) expected += std::lround(2 * kPi * (0.1 - (k - 0.5) * d) / d);
@@ -50,8 +58,7 @@ TEST_CASE("solid: shells have the layers, spacing and normals of their shape") {
     CHECK(r.norm() == doctest::Approx(0.1 - (q.layer - 0.5) * d).epsilon(1e-12));
     CHECK((q.normal + r.normalized()).norm() < 1e-12);  // into the body: -r / |r|
   }
-  SolidSpec ball{"ball", "sphere", {-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1}, {0.0, 0.0, 0.0}, 0.1,
-                 2,      1,        {0.0, 0.0, 0.0}};
+  SolidSpec ball = round_spec("sphere", {0.0, 0.0, 0.0}, 0.1, 1);
   auto shell = SolidShape<3>(ball).shell(d);
   // A Fibonacci sphere of radius R - d/2 holding 4 pi r^2 / d^2 points: one per d^2 of surface.
   CHECK(shell.size() == std::size_t(std::lround(4 * kPi * 0.095 * 0.095 / (d * d))));
@@ -61,7 +68,8 @@ TEST_CASE("solid: shells have the layers, spacing and normals of their shape") {
       if (j != i) nearest = std::min(nearest, (shell[i].position - shell[j].position).norm());
   CHECK(nearest > 0.8 * d);  // no two particles on top of each other; about d apart
   for (auto& q : shell) CHECK((q.normal + q.position.normalized()).norm() < 1e-12);
-  SolidSpec box{"box", "box", {0.0, 0.0}, {0.1, 0.05}, {}, 0, 2, 2, {0.0, 0.0}};
+  SolidSpec box;
+  box.shape = "box", box.min = {0.0, 0.0}, box.max = {0.1, 0.05}, box.layers = 2;
   auto lattice = SolidShape<2>(box).shell(d);
   CHECK(lattice.size() == 10 * 5 - 6 * 1);  // all but the middle row's inner 6 (deeper than 2 d)
   for (auto& q : lattice) {
@@ -195,7 +203,7 @@ TEST_CASE("solid: bad geometry is bad input naming the solid and the problem") {
   CHECK(test::scene_error(base + "[[solid]]\nshape = \"box\"\nmin = [0.5, 0.0]\n") ==
         "bad.toml:18:7: [[solid]] #0 (a box) needs min and max");
   CHECK(test::scene_error(base + "[[solid]]\nshape = \"cone\"\n") ==
-        "bad.toml:17:9: 'shape' in [[solid]] #0 is 'cone'; allowed: box, cylinder, sphere (did you mean "
+        "bad.toml:17:9: 'shape' in [[solid]] #0 is 'cone'; allowed: box, cylinder, sphere, mesh (did you mean "
         "'box'?)");
   CHECK(test::scene_error(base + "[[solid]]\nshape = \"box\"\nmin = [0.5, 0.0]\nmax = [0.6, 0.1]\n"
                                  "[[probe]]\nname = \"f\"\ntype = \"force\"\nsolid = \"block\"\n") ==

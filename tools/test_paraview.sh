@@ -42,7 +42,12 @@ check wcsph_3d "$work/wcsph_3d" 0,0.01,0.02
 "$ryushi" run scenes/dam_break_ritter_swe.toml --out "$work/swe" --quiet --end-time 0.1 --set output.interval=0.05
 check swe "$work/swe" 0,0.05,0.1 --arrays velocity,pressure,kind,id,depth,area,volume,surface_elevation \
   --color depth --z-equals surface_elevation
-echo "test-paraview: 4 runs x 4 readers passed; screenshots in $images"
+# The particles a scene makes before it runs (`check --write-initial`): an STL sphere in a tank.
+made=$("$ryushi" check scenes/dam_break_sphere_3d.toml --write-initial "$work/stl_initial" | sed -n 's/.*, \([0-9]*\) particles,.*/\1/p')
+xvfb-run -a -s "-screen 0 1024x768x24" pvpython tools/paraview_check.py "$work/stl_initial" \
+  --expect-points "$made" --expect-times 0 --image-dir "$images" --label stl_initial --arrays kind,body \
+  2> >(grep -v -e '^$' -e 'vtkXOpenGLRenderWindow' -e 'GLX' >&2)
+echo "test-paraview: 5 particle sets x 4 readers passed; screenshots in $images"
 
 # Pictures without ParaView: every frame and a movie, a 3D slice, and a clean refusal.
 "$ryushi" render "$work/wcsph" --movie >/dev/null

@@ -30,11 +30,20 @@ std::vector<std::pair<double, double>> ring(double r, double d, double phase) {
 }  // namespace
 
 template <int D>
-SolidShape<D>::SolidShape(const SolidSpec& spec)
-    : spec_(spec), lo_(to_vec<D>(spec.min)), hi_(to_vec<D>(spec.max)), centre_(to_vec<D>(spec.centre)) {}
+SolidShape<D>::SolidShape(const SolidSpec& spec, std::shared_ptr<const TriangleMesh> mesh)
+    : spec_(spec),
+      mesh_(std::move(mesh)),
+      lo_(to_vec<D>(spec.min)),
+      hi_(to_vec<D>(spec.max)),
+      centre_(to_vec<D>(spec.centre)) {}
 
 template <int D>
 double SolidShape<D>::signed_distance(const Vec<D>& x) const {
+  if constexpr (D == 3)
+    if (mesh_) {
+      const double distance = (x - mesh_->closest(x)).norm();
+      return mesh_->inside(x) ? -distance : distance;
+    }
   if (spec_.shape == "box") {
     Vec<D> q = (x - 0.5 * (lo_ + hi_)).cwiseAbs() - 0.5 * (hi_ - lo_);
     return q.cwiseMax(0.0).norm() + std::min(q.maxCoeff(), 0.0);
@@ -45,8 +54,37 @@ double SolidShape<D>::signed_distance(const Vec<D>& x) const {
 }
 
 template <int D>
+bool SolidShape<D>::within(const Vec<D>& x, double margin) const {
+  for (int a = 0; a < D; ++a)
+    if (x[a] < lo_[a] - margin || x[a] > hi_[a] + margin) return false;
+  if constexpr (D == 3)
+    if (mesh_) return mesh_->inside(x) || (x - mesh_->closest(x)).norm() < margin;
+  return signed_distance(x) < margin;
+}
+
+template <int D>
 std::vector<ShellParticle<D>> SolidShape<D>::shell(double d) const {
+  if (mesh_) return mesh_shell(d);
   return spec_.shape == "box" ? box_shell(d) : round_shell(d);
+}
+
+// On the lattice lo + (k + 1/2) d over the body's box, the points on the inner side of the
+// surface within `layers` spacings of it; the normal is the shortest way from the surface to the
+// point (into the body), the layer its distance in spacings rounded up.
+template <int D>
+std::vector<ShellParticle<D>> SolidShape<D>::mesh_shell(double d) const {
+  std::vector<ShellParticle<D>> out;
+  if constexpr (D == 3) {
+    std::array<long, D> from{}, to{};
+    for (int a = 0; a < D; ++a) to[a] = std::max(1L, std::lround((hi_[a] - lo_[a]) / d));
+    for_each_lattice_point<D>(lo_, d, from, to, [&](const Vec<D>& x) {
+      const Vec<D> towards = x - mesh_->closest(x);
+      const double depth = towards.norm();
+      if (depth > spec_.layers * d || depth <= 0 || !mesh_->inside(x)) return;
+      out.push_back({x, std::max(1, static_cast<int>(std::ceil(depth / d - 1e-9))), Vec<D>(towards / depth)});
+    });
+  }
+  return out;
 }
 
 // On the lattice lo + (k + 1/2) d, the points within `layers` spacings of a face. The normal

@@ -3,9 +3,11 @@
 // of the blocks, and the wall particles of the body's outer layers with the normal each method
 // asks for (from the fluid into the body) and its layer (1 = touching the fluid).
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "ecs/math.hpp"
+#include "geometry/triangle_mesh.hpp"
 #include "scene/scene.hpp"
 
 namespace ryushi {
@@ -22,16 +24,22 @@ class SolidShape {
  public:
   // spec.min/max bound the shape (the loader sets them for a cylinder and a sphere; a 3D
   // cylinder's run through the domain along its axis).
-  explicit SolidShape(const SolidSpec& spec);
+  // mesh: the [[mesh]] of a shape = "mesh" body (3D), else null.
+  explicit SolidShape(const SolidSpec& spec, std::shared_ptr<const TriangleMesh> mesh = nullptr);
   // Negative inside, positive outside; exact for the box, disc, cylinder and sphere.
   double signed_distance(const Vec<D>& x) const;
+  // Whether x lies inside the shape or within `margin` of it (fluid there is cut). Cheaper than
+  // the signed distance for a mesh: the bounding box first, the inside test, then the distance.
+  bool within(const Vec<D>& x, double margin) const;
   // The particles of the outer `layers` at spacing d.
   std::vector<ShellParticle<D>> shell(double d) const;
 
  private:
   std::vector<ShellParticle<D>> box_shell(double d) const;
   std::vector<ShellParticle<D>> round_shell(double d) const;
+  std::vector<ShellParticle<D>> mesh_shell(double d) const;
   SolidSpec spec_;
+  std::shared_ptr<const TriangleMesh> mesh_;
   Vec<D> lo_, hi_, centre_;
 };
 

@@ -19,12 +19,12 @@ SceneParticles<D> scene_particles(const Scene& s) {
   std::mt19937_64 rng(s.seed);
   std::uniform_real_distribution<double> shake(-s.disorder * d, s.disorder * d);
   std::vector<SolidShape<D>> solids;
-  for (auto& spec : s.solids) solids.emplace_back(spec);
+  for (auto& spec : s.solids) solids.emplace_back(spec, spec.mesh >= 0 ? s.meshes[spec.mesh].mesh : nullptr);
   // A block with an obstacle in it: lattice points within half a spacing of a solid are not fluid
   // (the solid's first layer lies half a spacing inside its surface).
   auto inside_solid = [&](const Vec<D>& x) {
     for (auto& shape : solids)
-      if (shape.signed_distance(x) < 0.5 * d * (1 - 1e-9)) return true;
+      if (shape.within(x, 0.5 * d * (1 - 1e-9))) return true;
     return false;
   };
   for (std::size_t index = 0; index < s.fluid.size(); ++index) {
@@ -37,6 +37,8 @@ SceneParticles<D> scene_particles(const Scene& s) {
     Vec<D> centre = 0.5 * (scene_vector<D>(b.min) + scene_vector<D>(b.max));
     for_each_lattice_point<D>(lo, d, from, to, [&](const Vec<D>& lattice) {
       if (!solids.empty() && inside_solid(lattice)) return;
+      if constexpr (D == 3)
+        if (b.mesh >= 0 && !s.meshes[b.mesh].mesh->inside(lattice)) return;
       Vec<D> x = lattice;
       if (s.disorder > 0)
         for (int a = 0; a < D; ++a) x[a] += shake(rng);

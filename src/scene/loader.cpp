@@ -501,6 +501,35 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       if (lo[a] < sc.domain_min[a] - 1e-12 || hi[a] > sc.domain_max[a] + 1e-12) return false;
     return true;
   };
+  if (auto* arr = root["mesh"].as_array()) {
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      auto t = root["mesh"][i];
+      MeshSpec m{*t["name"].value<std::string>(), *t["file"].value<std::string>(), nullptr};
+      const std::string label = "[[mesh]] '" + m.name + "'";
+      if (D != 3) val.fail(where("mesh", i, "file"), path_of("mesh", i, "file"), label + ": meshes are for 3D scenes");
+      for (auto& other : sc.meshes)
+        if (other.name == m.name) val.fail(where("mesh", i, "name"), path_of("mesh", i, "name"), "two meshes are named '" + m.name + "'");
+      auto file = std::filesystem::path(m.file);
+      if (file.is_relative()) file = std::filesystem::path(path).parent_path() / file;
+      MeshTransform transform;
+      transform.scale = *t["scale"].value<double>();
+      auto rotate = vec_of(*where("mesh", i, "rotate")), translate = vec_of(*where("mesh", i, "translate"));
+      for (int a = 0; a < 3; ++a) transform.rotate_degrees[a] = rotate[a], transform.translate[a] = translate[a];
+      try {
+        m.mesh = TriangleMesh::read(file.string(), transform);
+      } catch (const MeshError& e) {
+        val.fail(where("mesh", i, "file"), path_of("mesh", i, "file"), label + ": " + e.what());
+      }
+      sc.meshes.push_back(std::move(m));
+    }
+  }
+  // A [[mesh]] by name: its index, or an error at the key.
+  auto mesh_named = [&](const char* section, std::size_t i, const std::string& label) -> int {
+    const std::string name = *root[section][i]["mesh"].value<std::string>();
+    for (std::size_t k = 0; k < sc.meshes.size(); ++k)
+      if (sc.meshes[k].name == name) return static_cast<int>(k);
+    val.fail(where(section, i, "mesh"), path_of(section, i, "mesh"), label + ": there is no [[mesh]] named '" + name + "'");
+  };
   if (auto* arr = root["fluid"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
       FluidBlock b;
@@ -517,6 +546,13 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
             b.velocity[a] = *e.value<double>();
         }
         b.velocity_where = val.location(v, path_of("fluid", i, "velocity"));
+      }
+      if (where("fluid", i, "mesh")) {
+        const std::string label = "[[fluid]] #" + std::to_string(i);
+        b.mesh = mesh_named("fluid", i, label);
+        if (!sc.meshes[b.mesh].mesh->closed())
+          val.fail(where("fluid", i, "mesh"), path_of("fluid", i, "mesh"),
+                   label + ": [[mesh]] '" + sc.meshes[b.mesh].name + "' is not closed, so it has no inside to fill (it can be a [[solid]] surface)");
       }
       if (auto* pr = where("fluid", i, "pressure")) {
         if (sc.method == "swe")
@@ -613,7 +649,15 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       b.layers = static_cast<int>(t["layers"].value_or(static_cast<long long>(covering)));
       b.velocity.assign(D, 0.0);
       if (auto* v = where("solid", i, "velocity")) b.velocity = vec_of(*v);
-      if (b.shape == "box") {
+      if (b.shape == "mesh") {
+        need(where("solid", i, "mesh"), "shape", "(a mesh) needs `mesh`, the name of a [[mesh]]");
+        b.mesh = mesh_named("solid", i, label);
+        const auto& mesh = *sc.meshes[b.mesh].mesh;
+        // An open surface's layers lie behind it: the box grows by them.
+        const double behind = mesh.closed() ? 0.0 : b.layers * sc.spacing;
+        b.min.assign(D, 0.0), b.max.assign(D, 0.0);
+        for (int a = 0; a < D; ++a) b.min[a] = mesh.lower()[a] - behind, b.max[a] = mesh.upper()[a] + behind;
+      } else if (b.shape == "box") {
         need(where("solid", i, "min") && where("solid", i, "max"), "min", "(a box) needs min and max");
         b.min = vec_of(*where("solid", i, "min"));
         b.max = vec_of(*where("solid", i, "max"));
@@ -630,7 +674,8 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
           b.max[a] = along ? sc.domain_max[a] : b.centre[a] + b.radius;
         }
       }
-      need(inside(b.min, b.max), b.shape == "box" ? "min" : "centre", "lies (partly) outside the domain");
+      need(inside(b.min, b.max), b.shape == "box" ? "min" : b.shape == "mesh" ? "mesh" : "centre",
+           "lies (partly) outside the domain");
       need(!isph || b.layers == 1, "layers", "method isph uses one layer of wall particles (with normals); leave layers out or set 1");
       for (auto& other : sc.solids)
         need(other.name != b.name, "name", "has the name of another solid, '" + b.name + "'");

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "geometry/triangle_mesh.hpp"
 #include "systems/swe/bed.hpp"
 
 namespace ryushi {
@@ -29,6 +30,7 @@ struct FluidBlock {
   // "file:line:column", for errors found when the particles are made.
   std::vector<std::string> velocity_expression;
   std::string pressure_expression, velocity_where, pressure_where;
+  int mesh = -1;  // only the lattice points inside this [[mesh]] (index; -1: the whole box)
   double angular_velocity = 0;    // 2D: initial rigid rotation (omega (y - yc), -omega (x - xc))
   // swe: the water depth, or the surface elevation (depth = surface - bed), NaN when not given.
   double depth = std::numeric_limits<double>::quiet_NaN();
@@ -40,10 +42,17 @@ struct WallBox {
   bool open_top = true;
   std::vector<bool> open_ends;  // per axis: no wall at either end (a channel's inlet and outlet)
 };
+// [[mesh]]: an STL surface placed in the scene (geometry/triangle_mesh.hpp), read and checked by
+// the loader; fluid blocks fill it, solids are made of it.
+struct MeshSpec {
+  std::string name, file;
+  std::shared_ptr<const TriangleMesh> mesh;
+};
 // [[solid]]: an obstacle, a plate or a lid, as `layers` of wall particles inside its shape
 // (src/geometry/solid_shape.hpp). Fluid within half a spacing of it is cut out of the blocks.
 struct SolidSpec {
-  std::string name, shape;         // shape: box, cylinder (a disc in 2D), sphere
+  std::string name, shape;         // shape: box, cylinder (a disc in 2D), sphere, mesh
+  int mesh = -1;                   // mesh: the [[mesh]]'s index
   std::vector<double> min, max;    // box
   std::vector<double> centre;      // cylinder, sphere
   double radius = 0;
@@ -145,6 +154,7 @@ struct Scene {
   std::vector<FluidBlock> fluid;
   std::vector<WallBox> walls;
   std::vector<SolidSpec> solids;
+  std::vector<MeshSpec> meshes;
   std::vector<FixedPressureBox> fixed_pressure;
   std::vector<ProbeSpec> probes;
   std::vector<MetricSpec> metrics;

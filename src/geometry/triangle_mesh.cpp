@@ -1,0 +1,115 @@
+#include "geometry/triangle_mesh.hpp"
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <Eigen/Geometry>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+namespace ryushi {
+
+namespace {
+using Kernel3 = CGAL::Simple_cartesian<double>;
+using Point = Kernel3::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel3, Primitive>>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+Point to_point(const Vec<3>& x) {
+  return {x[0], x[1], x[2]};
+}
+Vec<3> to_vec(const Point& p) {
+  return {p.x(), p.y(), p.z()};
+}
+}  // namespace
+
+struct TriangleMesh::Impl {
+  Mesh mesh;
+  bool closed = false;
+  Vec<3> lower, upper;
+  std::unique_ptr<Tree> tree;
+  std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, Kernel3>> side;
+};
+
+TriangleMesh::TriangleMesh(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+TriangleMesh::~TriangleMesh() = default;
+
+std::shared_ptr<const TriangleMesh> TriangleMesh::read(const std::string& path, const MeshTransform& t) {
+  if (!std::ifstream(path).good()) throw MeshError("cannot open " + path);
+  auto impl = std::make_unique<Impl>();
+  Mesh& mesh = impl->mesh;
+  // read_polygon_mesh merges the repeated vertices of an STL's separate triangles and refuses
+  // what cannot be made a valid surface (CGAL's verbose reasons would go to std::cerr: silence).
+  bool ok = false;
+  try {
+    ok = PMP::IO::read_polygon_mesh(path, mesh, CGAL::parameters::verbose(false));
+  } catch (const std::exception&) {
+    ok = false;
+  }
+  if (!ok || mesh.number_of_faces() == 0)
+    throw MeshError(path +
+                    " is not a triangle mesh CGAL can read (STL, ASCII or binary; a surface without "
+                    "degenerate or non-manifold faces)");
+  // Scale, rotate about x, y, z, translate.
+  const double deg = std::numbers::pi / 180;
+  const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(t.rotate_degrees[2] * deg, Eigen::Vector3d::UnitZ()) *
+                                    Eigen::AngleAxisd(t.rotate_degrees[1] * deg, Eigen::Vector3d::UnitY()) *
+                                    Eigen::AngleAxisd(t.rotate_degrees[0] * deg, Eigen::Vector3d::UnitX()))
+                                       .toRotationMatrix();
+  const Vec<3> shift(t.translate[0], t.translate[1], t.translate[2]);
+  for (auto v : mesh.vertices())
+    mesh.point(v) = to_point(rotation * (t.scale * to_vec(mesh.point(v))) + shift);
+  impl->closed = CGAL::is_closed(mesh);
+  // A closed surface's faces are turned outward, whatever the file's winding.
+  if (impl->closed && !PMP::is_outward_oriented(mesh)) PMP::reverse_face_orientations(mesh);
+  impl->lower = Vec<3>::Constant(std::numeric_limits<double>::infinity());
+  impl->upper = -impl->lower;
+  for (auto v : mesh.vertices()) {
+    impl->lower = impl->lower.cwiseMin(to_vec(mesh.point(v)));
+    impl->upper = impl->upper.cwiseMax(to_vec(mesh.point(v)));
+  }
+  impl->tree = std::make_unique<Tree>(CGAL::faces(mesh).first, CGAL::faces(mesh).second, mesh);
+  impl->tree->accelerate_distance_queries();
+  if (impl->closed) impl->side = std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, Kernel3>>(*impl->tree);
+  return std::shared_ptr<const TriangleMesh>(new TriangleMesh(std::move(impl)));
+}
+
+std::size_t TriangleMesh::faces() const {
+  return impl_->mesh.number_of_faces();
+}
+bool TriangleMesh::closed() const {
+  return impl_->closed;
+}
+double TriangleMesh::volume() const {
+  return impl_->closed ? PMP::volume(impl_->mesh) : 0.0;
+}
+Vec<3> TriangleMesh::lower() const {
+  return impl_->lower;
+}
+Vec<3> TriangleMesh::upper() const {
+  return impl_->upper;
+}
+
+bool TriangleMesh::inside(const Vec<3>& x) const {
+  if (impl_->side) return (*impl_->side)(to_point(x)) == CGAL::ON_BOUNDED_SIDE;
+  auto [c, face] = impl_->tree->closest_point_and_primitive(to_point(x));
+  const auto n = PMP::compute_face_normal(face, impl_->mesh);
+  return (to_point(x) - c) * n < 0;
+}
+
+Vec<3> TriangleMesh::closest(const Vec<3>& x) const {
+  return to_vec(impl_->tree->closest_point(to_point(x)));
+}
+
+}  // namespace ryushi
