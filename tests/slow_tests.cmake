@@ -52,3 +52,5 @@ set_tests_properties("stability: ISPH at a fixed step of 1x its CFL limit keeps 
                      PROPERTIES LABELS "stability;slow" COST 12)
 set_tests_properties("stability: an MPS tank started with 30% disorder settles" PROPERTIES LABELS "stability;slow" COST 10)
 set_tests_properties("stability: a WCSPH tank started with 30% disorder settles" PROPERTIES LABELS "stability;slow" COST 10)
+set_tests_properties("solid: a piston wave maker makes the waves of linear wave-maker theory (WCSPH)"
+                     PROPERTIES LABELS slow COST 40)

@@ -65,6 +65,8 @@ inline constexpr Component<Vector> velocity_start{"velocity_start"};
 inline constexpr Component<Scalar> density_start{"density_start"};
 // The [[solid]] a wall particle belongs to (-1: a container wall, or fluid); only in scenes with solids.
 inline constexpr Component<Flags> body{"body"};
+// Where a moving [[solid]]'s particle rests (its displacement is added to it); only in scenes with one.
+inline constexpr Component<Vector> body_origin{"body_origin"};
 }  // namespace components
 
 }  // namespace ryushi

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "methods/system_registry.hpp"
+#include "systems/boundary/prescribed_motion.hpp"
 
 namespace ryushi {
 
@@ -47,6 +48,15 @@ MethodSetup<D> build_method(const Scene& s, World<D>& world, const PipelineOptio
     m = entry.build2(s, world, options);
   else
     m = entry.build3(s, world, options);
+  // Bodies with a prescribed motion move first in the step, before the neighbour search sees them.
+  std::vector<typename PrescribedMotion<D>::Body> moving;
+  for (std::size_t k = 0; k < s.solids.size(); ++k) {
+    if (s.solids[k].displacement.empty()) continue;
+    typename PrescribedMotion<D>::Body body{static_cast<int>(k), {}};
+    for (auto& formula : s.solids[k].displacement) body.formulas.emplace_back(formula);
+    moving.push_back(std::move(body));
+  }
+  if (!moving.empty()) m.pipeline.insert(m.pipeline.begin(), std::make_shared<PrescribedMotion<D>>(std::move(moving)));
   // The scene's registered [[systems]] go last; the scheduler places them by their access.
   for (auto& extra : s.systems) m.pipeline.push_back(make_registered_system<D>(extra.name, extra.params, m.context));
   return m;

@@ -84,8 +84,12 @@ void append_scene_particles(
     std::fill(column.begin(), column.end(), -1);
     body = column;
   }
+  std::span<Vec<D>> origin;
+  if (std::any_of(s.solids.begin(), s.solids.end(), [](auto& b) { return !b.displacement.empty(); }))
+    origin = world.ensure(components::body_origin);
   for (std::size_t k = 0; k < particles.wall.size(); ++k) {
     std::size_t i = wfirst + k;
+    if (!origin.empty()) origin[i] = particles.wall[k];
     kind[i] = wall_kind(particles.wall_layer[k]);
     x[i] = particles.wall[k];
     v[i] = particles.wall_velocity[k];  // a moving body's particles stay put; walls use v as the surface's

@@ -200,6 +200,16 @@ std::vector<double> vec_of(const toml::node& n) {
   return v;
 }
 
+// A number or formula entry (KeyType::FieldValue) as the text of a formula: numbers exactly
+// (17 digits), so that a number and its formula give the same value.
+std::string field_text(const toml::node& n) {
+  if (n.is_string()) return *n.value<std::string>();
+  std::ostringstream number;
+  number.precision(17);
+  number << *n.value<double>();
+  return number.str();
+}
+
 // Applies one `section.key=value` or `section.N.key=value` override to the tree.
 void apply_override(toml::table& root, const std::string& text, Validator& val) {
   auto eq = text.find('=');
@@ -557,10 +567,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       if (auto* pr = where("fluid", i, "pressure")) {
         if (sc.method == "swe")
           val.fail(pr, path_of("fluid", i, "pressure"), "[[fluid]] #" + std::to_string(i) + ": pressure is for methods wcsph, mps and isph (swe sets depth)");
-        std::ostringstream number;
-        number.precision(17);
-        if (pr->is_number()) number << *pr->value<double>();
-        b.pressure_expression = pr->is_string() ? *pr->value<std::string>() : number.str();
+        b.pressure_expression = field_text(*pr);
         b.pressure_where = val.location(pr, path_of("fluid", i, "pressure"));
       }
       b.angular_velocity = *root["fluid"][i]["angular_velocity"].value<double>();
@@ -649,6 +656,11 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       b.layers = static_cast<int>(t["layers"].value_or(static_cast<long long>(covering)));
       b.velocity.assign(D, 0.0);
       if (auto* v = where("solid", i, "velocity")) b.velocity = vec_of(*v);
+      if (auto* motion = where("solid", i, "displacement")) {
+        need(!where("solid", i, "velocity"), "displacement", "has both velocity (a surface sliding in place) and displacement (moving particles); give one");
+        for (auto& e : *motion->as_array()) b.displacement.push_back(field_text(e));
+        b.displacement_where = val.location(motion, path_of("solid", i, "displacement"));
+      }
       if (b.shape == "mesh") {
         need(where("solid", i, "mesh"), "shape", "(a mesh) needs `mesh`, the name of a [[mesh]]");
         b.mesh = mesh_named("solid", i, label);

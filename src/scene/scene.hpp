@@ -59,6 +59,10 @@ struct SolidSpec {
   int axis = 2;                    // 3D cylinder: the axis it runs along (through the whole domain)
   int layers = 3;
   std::vector<double> velocity;    // prescribed, constant (a lid, a plate); the particles stay put
+  // Prescribed motion: per axis a formula of t and the particle's rest position x, y, z (the
+  // particles move; empty: none). *_where: the key's place, for errors.
+  std::vector<std::string> displacement;
+  std::string displacement_where;
 };
 // Fluid particles inside [min, max] at the start hold p = pressure + gradient . x (Dirichlet):
 // the inlet and outlet of an Eulerian ISPH channel.

@@ -194,6 +194,7 @@ std::vector<SectionSpec> build() {
                 positive("radius", "m", "", "cylinder, sphere: radius."),
                 ranged({"axis", K::Integer, "", "2", "3D cylinder: the axis (0, 1, 2) it runs along."}, 0, 2),
                 {"velocity", K::Vector, "m/s", "(at rest)", "Prescribed constant velocity of the body's surface (its particles do not move): the lid of a cavity, the moving plate of a Couette flow."},
+                {"displacement", K::FieldVector, "m", "(none)", "Prescribed motion: per axis the displacement from the rest position as a formula of t and the particle's rest position x, y, z (as for [[fluid]] velocity), e.g. [\"0.02*sin(2*pi*t)\", \"0\"] for a piston wave maker; a rotation by angle a(t) about (xc, yc) is [\"(x-xc)*(cos(a)-1) - (y-yc)*sin(a)\", \"(x-xc)*sin(a) + (y-yc)*(cos(a)-1)\"]. The particles move with it at the start of every step and carry its time derivative as their velocity. Not with `velocity`."},
                 ranged({"layers", K::Integer, "", "(as [[wall]]: ceil(support / spacing); isph 1)", "Thickness in particle layers, inward from the surface."}, 1, 16)}});
   s.push_back({"fixed_pressure", true, false,
                "isph, description = \"eulerian\": the fluid particles inside the box [min, max] hold the pressure p = pressure + gradient . x (a Dirichlet value: a channel's inlet or outlet). Make it at least a support radius long along the flow, so that the particles next to it have a full support. docs/isph.md.",

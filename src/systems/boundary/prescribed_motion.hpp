@@ -1,0 +1,53 @@
+#pragma once
+// Prescribed motion of [[solid]] bodies (a piston wave maker, a rotating paddle): at the start of
+// every step each particle of a moving body goes to its rest position plus the displacement
+// formula at the step's time, and takes the formula's time derivative (a central difference
+// over 2 microseconds) as its velocity, which the wall conditions use as the surface's.
+#include <string>
+#include <vector>
+
+#include "ecs/system.hpp"
+#include "scene/expression.hpp"
+
+namespace ryushi {
+
+template <int D>
+class PrescribedMotion final : public System<D> {
+ public:
+  struct Body {
+    int index;                         // the [[solid]]'s
+    std::vector<Expression> formulas;  // one per axis, of t and the rest position
+  };
+  explicit PrescribedMotion(std::vector<Body> bodies) : bodies_(std::move(bodies)) {}
+  std::string name() const override { return "prescribed_motion"; }
+  Access access() const override {
+    Access a;
+    a.read(components::kind, components::body, components::body_origin, resources::time)
+        .write(components::position, components::velocity);
+    return a;
+  }
+  void run(SystemContext<D>& ctx) override {
+    auto body = ctx.read(components::body);
+    auto origin = ctx.read(components::body_origin);
+    auto x = ctx.write(components::position);
+    auto v = ctx.write(components::velocity);
+    const double t = ctx.read(resources::time), h = 1e-6;
+    for (std::size_t i = 0; i < body.size(); ++i) {
+      if (body[i] < 0) continue;
+      for (auto& b : bodies_) {
+        if (b.index != body[i]) continue;
+        const Vec<D>& o = origin[i];
+        const double y = D > 1 ? o[1] : 0.0, z = D > 2 ? o[2] : 0.0;
+        for (int a = 0; a < D; ++a) {
+          x[i][a] = o[a] + b.formulas[a](o[0], y, z, t);
+          v[i][a] = (b.formulas[a](o[0], y, z, t + h) - b.formulas[a](o[0], y, z, t - h)) / (2 * h);
+        }
+      }
+    }
+  }
+
+ private:
+  std::vector<Body> bodies_;
+};
+
+}  // namespace ryushi
