@@ -52,6 +52,22 @@ SceneParticles<D> scene_particles(const Scene& s) {
       out.fluid_velocity.push_back(u);
     });
   }
+  // [[import]]: as read; without a pressure the depth below the highest imported particle's top.
+  for (auto& import : s.imports) {
+    const auto& in = *import.particles;
+    double top = -1e300;
+    for (auto& x : in.position) top = std::max(top, x[D - 1] + 0.5 * d);
+    for (std::size_t k = 0; k < in.position.size(); ++k) {
+      Vec<D> x, u = Vec<D>::Zero();
+      for (int a = 0; a < D; ++a) x[a] = in.position[k][a];
+      if (!in.velocity.empty())
+        for (int a = 0; a < D; ++a) u[a] = in.velocity[k][a];
+      out.fluid.push_back(x);
+      out.depth.push_back(top - x[D - 1]);
+      out.fluid_velocity.push_back(u);
+      out.pressure.push_back(in.pressure.empty() ? std::numeric_limits<double>::quiet_NaN() : in.pressure[k]);
+    }
+  }
   for (auto& w : s.walls) {
     Vec<D> lo = scene_vector<D>(w.min), hi = scene_vector<D>(w.max);
     std::array<long, D> from{}, to{};

@@ -9,6 +9,7 @@
 
 #include "methods/system_registry.hpp"
 #include "scene/expression.hpp"
+#include "scene/particle_import.hpp"
 #include "scene/overlaps.hpp"
 #include "scene/scene.hpp"
 #include "scene/schema.hpp"
@@ -20,6 +21,11 @@ namespace ryushi {
 double Scene::fluid_height() const {
   double h = 0;
   for (auto& b : fluid) h = std::max(h, b.max.back() - b.min.back());
+  for (auto& import : imports) {  // from the lowest particle's bottom to the highest one's top
+    double low = 1e300, high = -1e300;
+    for (auto& x : import.particles->position) low = std::min(low, x[dimension - 1]), high = std::max(high, x[dimension - 1]);
+    h = std::max(h, high - low + spacing);
+  }
   return h;
 }
 double Scene::support_radius() const {
@@ -598,7 +604,32 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       sc.fluid.push_back(std::move(b));
     }
   }
-  if (sc.fluid.empty()) val.fail(root["fluid"].node(), "fluid", "the scene has no [[fluid]] block");
+  if (auto* arr = root["import"].as_array()) {
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      ImportSpec spec{*root["import"][i]["file"].value<std::string>(), nullptr};
+      const std::string label = "[[import]] #" + std::to_string(i);
+      if (swe) val.fail(where("import", i, "file"), path_of("import", i, "file"), label + " is for methods wcsph, mps and isph");
+      auto file = std::filesystem::path(spec.file);
+      if (file.is_relative()) file = std::filesystem::path(path).parent_path() / file;
+      try {
+        spec.particles = import_particles(file.string(), D);
+      } catch (const ImportError& e) {
+        val.fail(where("import", i, "file"), path_of("import", i, "file"), label + ": " + e.what());
+      }
+      for (auto& x : spec.particles->position) {
+        std::vector<double> at(x.begin(), x.begin() + D);
+        if (!inside(at, at)) {
+          std::ostringstream m;
+          m << label << ": a particle at (" << x[0] << ", " << x[1] << (D == 3 ? ", " + std::to_string(x[2]) : "")
+            << ") lies outside the domain";
+          val.fail(where("import", i, "file"), path_of("import", i, "file"), m.str());
+        }
+      }
+      sc.imports.push_back(std::move(spec));
+    }
+  }
+  if (sc.fluid.empty() && sc.imports.empty())
+    val.fail(root["fluid"].node(), "fluid", "the scene has no [[fluid]] block and no [[import]]");
   if (auto* arr = root["wall"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
       // ISPH walls are one layer of particles with normals (ISPH paper section 4).
@@ -832,8 +863,10 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
                    path_of("metric", i, "reference"), std::string("metric.reference: ") + e.what());
         }
       }
-      if (spec.type == "dam_break_front" && spec.width <= 0) spec.width = sc.fluid.front().max[0] - sc.fluid.front().min[0];
-      const FluidBlock& first = sc.fluid.front();
+      FluidBlock first;  // an imports-only scene has no block to take defaults from
+      first.min.assign(D, 0.0), first.max.assign(D, 0.0);
+      if (!sc.fluid.empty()) first = sc.fluid.front();
+      if (spec.type == "dam_break_front" && spec.width <= 0) spec.width = first.max[0] - first.min[0];
       auto need = [&](bool ok, const char* key, const std::string& what) {
         if (!ok)
           val.fail(where("metric", i, key) ? where("metric", i, key) : &(*arr)[i], path_of("metric", i, key),

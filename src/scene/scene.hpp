@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "geometry/triangle_mesh.hpp"
+#include "scene/particle_import.hpp"
 #include "systems/swe/bed.hpp"
 
 namespace ryushi {
@@ -116,6 +117,12 @@ struct SweSpec {
   std::shared_ptr<Bed> bed = std::make_shared<Bed>();
 };
 
+// [[import]]: fluid particles read from a ryushi frame or a CSV (scene/particle_import.hpp).
+struct ImportSpec {
+  std::string file;
+  std::shared_ptr<const ImportedParticles> particles;
+};
+
 struct Scene {
   std::string path, name, description;
   int dimension = 2;
@@ -159,6 +166,7 @@ struct Scene {
   std::vector<WallBox> walls;
   std::vector<SolidSpec> solids;
   std::vector<MeshSpec> meshes;
+  std::vector<ImportSpec> imports;
   std::vector<FixedPressureBox> fixed_pressure;
   std::vector<ProbeSpec> probes;
   std::vector<MetricSpec> metrics;

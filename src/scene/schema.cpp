@@ -161,7 +161,10 @@ std::vector<SectionSpec> build() {
                  "Extra per-particle fields to write besides position, velocity, pressure, density, kind, id (e.g. \"acceleration\", \"density_rate\", \"mass\")."},
                 non_negative("probe_interval", "s", "(interval / 10)", "Simulated time between probe samples in probes.csv."),
                 non_negative("checkpoint_interval", "s", "0.0", "Simulated time between checkpoints (0: none): OUT/checkpoint.h5 holds the whole state, written atomically after the first step that reaches each multiple; `ryushi resume OUT` continues from it and gives the same result, bit for bit with the same thread count, as a run that was never stopped (docs/output.md). `ryushi run --checkpoint-interval T` overrides it.")}});
-  s.push_back({"fluid", true, true, "A block of fluid on the lattice: particles at min + (k + 1/2) d.",
+  s.push_back({"import", true, false,
+               "Fluid particles read from a file, with or instead of [[fluid]] blocks (methods wcsph, mps, isph): a settled tank can start the next run. A ryushi frame (.h5: the fluid particles' position, velocity and pressure) or a CSV (.csv: a header naming x, y[, z] and any of u, v[, w] (velocity) and p (pressure), then one particle per line). Without a pressure the method starts its own (hydrostatic below the highest imported particle). Each particle gets the mass of a lattice cell, rho d^dim, so import particles spaced by [particles] spacing.",
+               {{"file", K::String, "", "", "The file, relative to the scene file.", true}}});
+  s.push_back({"fluid", true, false, "A block of fluid on the lattice: particles at min + (k + 1/2) d (a scene needs at least one [[fluid]] or [[import]]).",
                {{"min", K::Vector, "m", "", "Lower corner.", true},
                 {"max", K::Vector, "m", "", "Upper corner.", true},
                 {"velocity", K::FieldVector, "m/s", "(at rest)", "Initial velocity of the block's particles, one entry per axis: a number, or an expression of the particle's x, y, z as a string (muparser syntax: + - * / ^, sin, cos, tan, exp, log, sqrt, abs, min, max, pi, e, `c ? a : b`), e.g. [\"sin(2*pi*x)*cos(2*pi*y)\", \"-cos(2*pi*x)*sin(2*pi*y)\"]. A bad expression is an error at the key with the parser's message; a value that is not finite at some particle is an error naming the particle's place."},
