@@ -258,3 +258,45 @@ TEST_CASE("solid: a piston wave maker makes the waves of linear wave-maker theor
     if (t[i] >= 2 && t[i] < 5) sum += force[i], ++n;
   CHECK(sum / n == doctest::Approx(-1000 * g * depth * depth / 2).epsilon(0.10));
 }
+
+TEST_CASE("solid: a tabulated displacement moves a body along the table, and imported fluid may not sit in a body") {
+  auto dir = test::unique_scratch("solid_table");
+  std::filesystem::create_directories(dir);
+  test::write_text(dir / "motion.csv", "t, dx, dy\n0.0, 0.0, 0.0\n1.0, 0.1, 0.0\n2.0, 0.1, 0.05\n");
+  const std::string base =
+      "[scene]\ndimension = 2\n[domain]\nmin = [-0.1, -0.1]\nmax = [1.1, 1.1]\n[particles]\nspacing = 0.02\n"
+      "[physics]\ngravity = [0.0, 0.0]\n[time]\nend = 1.5\n[output]\ninterval = 1.5\nfields = [\"body_origin\", \"body\"]\n"
+      "[[fluid]]\nmin = [0.0, 0.0]\nmax = [0.2, 0.2]\n";
+  test::write_text(dir / "s.toml", base + "[[solid]]\nshape = \"box\"\nmin = [0.5, 0.5]\nmax = [0.6, 0.6]\n"
+                                          "displacement_table = \"motion.csv\"\n");
+  auto r = test::run_command(bin() + " run " + (dir / "s.toml").string() + " --quiet --out " + (dir / "out").string());
+  REQUIRE_MESSAGE(r.code == 0, r.output);
+  // The frame at t = 1.5 s shows the body where the last step started (t = 1.5 s - dt), on the
+  // table's second segment: dx = 0.1, dy = 0.05 (t - 1), velocity (0, 0.05).
+  const auto frame = test::last_frame(dir / "out");
+  auto body = test::read_dataset(frame, "body").values, x = test::read_dataset(frame, "position").values,
+       o = test::read_dataset(frame, "body_origin").values, v = test::read_dataset(frame, "velocity").values;
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < body.size(); ++i) {
+    if (body[i] != 0) continue;
+    ++moved;
+    CHECK(x[3 * i] - o[3 * i] == doctest::Approx(0.1).epsilon(1e-12));
+    CHECK(x[3 * i + 1] - o[3 * i + 1] == doctest::Approx(0.025).epsilon(0.01));  // t - dt for t = 1.5
+    CHECK(v[3 * i] == 0.0);
+    CHECK(v[3 * i + 1] == doctest::Approx(0.05).epsilon(1e-12));
+  }
+  CHECK(moved == 25);
+  test::write_text(dir / "bad.csv", "t, dx, dy\n0.0, 0.0, 0.0\n0.0, 0.1, 0.0\n");
+  CHECK(test::scene_error(base + "[[solid]]\nshape = \"box\"\nmin = [0.5, 0.5]\nmax = [0.6, 0.6]\n"
+                                 "displacement_table = \"" + (dir / "bad.csv").string() + "\"\n") ==
+        "bad.toml:22:22: [[solid]] #0 displacement_table: " + (dir / "bad.csv").string() + ":3: the times must increase");
+  CHECK(test::scene_error(base + "[method]\nname = \"isph\"\n[[solid]]\nshape = \"box\"\nmin = [0.5, 0.5]\nmax = [0.6, 0.6]\n"
+                                 "displacement = [\"t\", \"0\"]\n") ==
+        "bad.toml:24:16: [[solid]] #0 moves, but method isph's wall rows do not take a wall's normal velocity yet (ISPH "
+        "paper eq. 17): a piston threw particles out within 1.5 s; use wcsph or mps");
+  test::write_text(dir / "in_body.csv", "x, y\n0.55, 0.55\n");
+  CHECK(test::scene_error(base + "[[solid]]\nshape = \"box\"\nmin = [0.5, 0.5]\nmax = [0.6, 0.6]\n"
+                                 "[[import]]\nfile = \"" + (dir / "in_body.csv").string() + "\"\n") ==
+        "bad.toml:23:8: [[import]] #0: a particle at (0.55, 0.55) lies in [[solid]] 'solid0' or within half a "
+        "spacing of it");
+}

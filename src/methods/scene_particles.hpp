@@ -85,7 +85,8 @@ void append_scene_particles(
     body = column;
   }
   std::span<Vec<D>> origin;
-  if (std::any_of(s.solids.begin(), s.solids.end(), [](auto& b) { return !b.displacement.empty(); }))
+  if (std::any_of(s.solids.begin(), s.solids.end(),
+                  [](auto& b) { return !b.displacement.empty() || !b.displacement_table.empty(); }))
     origin = world.ensure(components::body_origin);
   for (std::size_t k = 0; k < particles.wall.size(); ++k) {
     std::size_t i = wfirst + k;

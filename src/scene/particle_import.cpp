@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 
+#include "scene/csv_row.hpp"
 #include "systems/io/hdf5_read.hpp"
 
 namespace ryushi {
@@ -73,18 +74,12 @@ std::shared_ptr<const ImportedParticles> from_csv(const std::string& path, int d
   const bool has_pressure = column.count("p") != 0;
   auto out = std::make_shared<ImportedParticles>();
   for (std::size_t number = 2; std::getline(in, line); ++number) {
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    if (csv_blank(line)) continue;
     std::vector<double> values;
-    std::stringstream fields(line);
-    for (std::string field; std::getline(fields, field, ',');) {
-      char* end = nullptr;
-      const double value = std::strtod(field.c_str(), &end);
-      while (end && (*end == ' ' || *end == '\t' || *end == '\r')) ++end;
-      if (end == field.c_str() || *end != '\0' || !std::isfinite(value)) {
-        field.erase(0, field.find_first_not_of(" \t"));
-        throw ImportError(path + ":" + std::to_string(number) + ": '" + field + "' is not a finite number");
-      }
-      values.push_back(value);
+    try {
+      values = csv_numbers(line);
+    } catch (const std::runtime_error& e) {
+      throw ImportError(path + ":" + std::to_string(number) + ": " + e.what());
     }
     if (values.size() != column.size())
       throw ImportError(path + ":" + std::to_string(number) + ": " + std::to_string(values.size()) +

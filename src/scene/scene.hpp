@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "geometry/triangle_mesh.hpp"
+#include "scene/motion_table.hpp"
 #include "scene/particle_import.hpp"
 #include "systems/swe/bed.hpp"
 
@@ -64,6 +65,7 @@ struct SolidSpec {
   // particles move; empty: none). *_where: the key's place, for errors.
   std::vector<std::string> displacement;
   std::string displacement_where;
+  std::vector<MotionSample> displacement_table;  // or tabulated (scene/motion_table.hpp)
 };
 // Fluid particles inside [min, max] at the start hold p = pressure + gradient . x (Dirichlet):
 // the inlet and outlet of an Eulerian ISPH channel.

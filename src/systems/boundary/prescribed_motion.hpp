@@ -2,12 +2,14 @@
 // Prescribed motion of [[solid]] bodies (a piston wave maker, a rotating paddle): at the start of
 // every step each particle of a moving body goes to its rest position plus the displacement
 // formula at the step's time, and takes the formula's time derivative (a central difference
-// over 2 microseconds) as its velocity, which the wall conditions use as the surface's.
+// over 2 microseconds) as its velocity, which the wall conditions use as the surface's; or the
+// tabulated displacement and its slope.
 #include <string>
 #include <vector>
 
 #include "ecs/system.hpp"
 #include "scene/expression.hpp"
+#include "scene/motion_table.hpp"
 
 namespace ryushi {
 
@@ -16,7 +18,8 @@ class PrescribedMotion final : public System<D> {
  public:
   struct Body {
     int index;                         // the [[solid]]'s
-    std::vector<Expression> formulas;  // one per axis, of t and the rest position
+    std::vector<Expression> formulas;  // one per axis, of t and the rest position; or
+    std::vector<MotionSample> table;   // a tabulated displacement (the same for every particle)
   };
   explicit PrescribedMotion(std::vector<Body> bodies) : bodies_(std::move(bodies)) {}
   std::string name() const override { return "prescribed_motion"; }
@@ -37,6 +40,11 @@ class PrescribedMotion final : public System<D> {
       for (auto& b : bodies_) {
         if (b.index != body[i]) continue;
         const Vec<D>& o = origin[i];
+        if (!b.table.empty()) {
+          auto [shift, speed] = sample_motion(b.table, t);
+          for (int a = 0; a < D; ++a) x[i][a] = o[a] + shift[a], v[i][a] = speed[a];
+          continue;
+        }
         const double y = D > 1 ? o[1] : 0.0, z = D > 2 ? o[2] : 0.0;
         for (int a = 0; a < D; ++a) {
           x[i][a] = o[a] + b.formulas[a](o[0], y, z, t);

@@ -1,0 +1,24 @@
+#pragma once
+// A tabulated displacement for a [[solid]] (`displacement_table`): a CSV with a header and rows
+// t, dx, dy[, dz], times increasing. Between rows the displacement is linear (the velocity that
+// row's slope); before the first row it is the first, after the last the last (at rest).
+#include <array>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ryushi {
+
+struct MotionSample {
+  double t;
+  std::array<double, 3> displacement;
+};
+
+// Throws std::runtime_error("FILE:LINE: problem").
+std::vector<MotionSample> read_motion_table(const std::string& path, int dimension);
+
+// Displacement and velocity at time t (table not empty).
+std::pair<std::array<double, 3>, std::array<double, 3>> sample_motion(const std::vector<MotionSample>& table,
+                                                                      double t);
+
+}  // namespace ryushi
