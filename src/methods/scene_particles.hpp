@@ -1,8 +1,9 @@
 #pragma once
 // The particles a scene describes, before any method gives them mass or pressure: fluid blocks
-// on the lattice (with their depth below the block's top, for hydrostatic starts) and wall
-// containers (with each wall particle's layer, 1 = touching the fluid). Every method fills its
-// world from this one description.
+// on the lattice (with their depth below the block's top, for hydrostatic starts, cut around
+// solid bodies and clipped to a mesh), imported fluid, wall containers and solid bodies (with
+// each wall particle's layer, 1 = touching the fluid, its normal and its body). Every method
+// fills its world from this one description.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -38,8 +39,9 @@ SceneParticles<D> scene_particles(const Scene& scene);
 
 // Appends the scene's particles to the world: fluid with the blocks' initial velocities,
 // (density, pressure) = fluid_state(depth, pressure) (pressure: the block's given initial
-// pressure, NaN where none) and mass = density * d^D (each lattice cell holds its fluid), then the wall particles with kind = wall_kind(layer), density rho0 and mass rho0 d^D;
-// a method that keeps only some layers drops the others with keep_layer.
+// pressure, NaN where none) and mass = density * d^D (each lattice cell holds its fluid), then
+// the wall particles with kind = wall_kind(layer), density rho0, mass rho0 d^D and their body's
+// velocity; a method that keeps only some layers drops the others with keep_layer.
 template <int D, class FluidState, class WallKind, class KeepLayer = bool (*)(int)>
 void append_scene_particles(
     const Scene& s, double rho0, World<D>& world, FluidState&& fluid_state, WallKind&& wall_kind,
