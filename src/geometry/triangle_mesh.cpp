@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numbers>
 
 namespace ryushi {
