@@ -202,9 +202,10 @@ TEST_CASE("solid: bad geometry is bad input naming the solid and the problem") {
         "bad.toml:21:9: [[solid]] #1 overlaps [[solid]] 'solid0' (their particles would sit on each other)");
   CHECK(test::scene_error(base + "[[solid]]\nshape = \"box\"\nmin = [0.5, 0.0]\n") ==
         "bad.toml:18:7: [[solid]] #0 (a box) needs min and max");
-  CHECK(test::scene_error(base + "[[solid]]\nshape = \"cone\"\n") ==
-        "bad.toml:17:9: 'shape' in [[solid]] #0 is 'cone'; allowed: box, cylinder, sphere, mesh (did you mean "
-        "'box'?)");
+  CHECK(
+      test::scene_error(base + "[[solid]]\nshape = \"cone\"\n") ==
+      "bad.toml:17:9: 'shape' in [[solid]] #0 is 'cone'; allowed: box, cylinder, sphere, mesh (did you mean "
+      "'box'?)");
   CHECK(test::scene_error(base + "[[solid]]\nshape = \"box\"\nmin = [0.5, 0.0]\nmax = [0.6, 0.1]\n"
                                  "[[probe]]\nname = \"f\"\ntype = \"force\"\nsolid = \"block\"\n") ==
         "bad.toml:23:9: [[probe]] 'f': there is no [[solid]] named 'block'");
@@ -237,7 +238,8 @@ TEST_CASE("solid: a piston wave maker makes the waves of linear wave-maker theor
   const double g = 9.81, depth = 0.2, stroke = 0.04, omega = 2 * kPi;
   double k = omega * omega / g;
   for (int n = 0; n < 100; ++n) k = omega * omega / (g * std::tanh(k * depth));  // dispersion relation
-  const double biesel = stroke * 2 * (std::cosh(2 * k * depth) - 1) / (std::sinh(2 * k * depth) + 2 * k * depth);
+  const double biesel =
+      stroke * 2 * (std::cosh(2 * k * depth) - 1) / (std::sinh(2 * k * depth) + 2 * k * depth);
   CHECK(biesel == doctest::Approx(0.0406).epsilon(0.001));
   auto csv = test::read_csv(dir / "probes.csv");
   const auto& t = csv["time"];
@@ -259,17 +261,22 @@ TEST_CASE("solid: a piston wave maker makes the waves of linear wave-maker theor
   CHECK(sum / n == doctest::Approx(-1000 * g * depth * depth / 2).epsilon(0.10));
 }
 
-TEST_CASE("solid: a tabulated displacement moves a body along the table, and imported fluid may not sit in a body") {
+TEST_CASE(
+    "solid: a tabulated displacement moves a body along the table, and imported fluid may not sit in a "
+    "body") {
   auto dir = test::unique_scratch("solid_table");
   std::filesystem::create_directories(dir);
   test::write_text(dir / "motion.csv", "t, dx, dy\n0.0, 0.0, 0.0\n1.0, 0.1, 0.0\n2.0, 0.1, 0.05\n");
   const std::string base =
       "[scene]\ndimension = 2\n[domain]\nmin = [-0.1, -0.1]\nmax = [1.1, 1.1]\n[particles]\nspacing = 0.02\n"
-      "[physics]\ngravity = [0.0, 0.0]\n[time]\nend = 1.5\n[output]\ninterval = 1.5\nfields = [\"body_origin\", \"body\"]\n"
+      "[physics]\ngravity = [0.0, 0.0]\n[time]\nend = 1.5\n[output]\ninterval = 1.5\nfields = "
+      "[\"body_origin\", \"body\"]\n"
       "[[fluid]]\nmin = [0.0, 0.0]\nmax = [0.2, 0.2]\n";
-  test::write_text(dir / "s.toml", base + "[[solid]]\nshape = \"box\"\nmin = [0.5, 0.5]\nmax = [0.6, 0.6]\n"
-                                          "displacement_table = \"motion.csv\"\n");
-  auto r = test::run_command(bin() + " run " + (dir / "s.toml").string() + " --quiet --out " + (dir / "out").string());
+  test::write_text(dir / "s.toml", base +
+                                       "[[solid]]\nshape = \"box\"\nmin = [0.5, 0.5]\nmax = [0.6, 0.6]\n"
+                                       "displacement_table = \"motion.csv\"\n");
+  auto r = test::run_command(bin() + " run " + (dir / "s.toml").string() + " --quiet --out " +
+                             (dir / "out").string());
   REQUIRE_MESSAGE(r.code == 0, r.output);
   // The frame at t = 1.5 s shows the body where the last step started (t = 1.5 s - dt), on the
   // table's second segment: dx = 0.1, dy = 0.05 (t - 1), velocity (0, 0.05).
@@ -287,16 +294,55 @@ TEST_CASE("solid: a tabulated displacement moves a body along the table, and imp
   }
   CHECK(moved == 25);
   test::write_text(dir / "bad.csv", "t, dx, dy\n0.0, 0.0, 0.0\n0.0, 0.1, 0.0\n");
-  CHECK(test::scene_error(base + "[[solid]]\nshape = \"box\"\nmin = [0.5, 0.5]\nmax = [0.6, 0.6]\n"
-                                 "displacement_table = \"" + (dir / "bad.csv").string() + "\"\n") ==
-        "bad.toml:22:22: [[solid]] #0 displacement_table: " + (dir / "bad.csv").string() + ":3: the times must increase");
-  CHECK(test::scene_error(base + "[method]\nname = \"isph\"\n[[solid]]\nshape = \"box\"\nmin = [0.5, 0.5]\nmax = [0.6, 0.6]\n"
-                                 "displacement = [\"t\", \"0\"]\n") ==
-        "bad.toml:24:16: [[solid]] #0 moves, but method isph's wall rows do not take a wall's normal velocity yet (ISPH "
+  CHECK(test::scene_error(base +
+                          "[[solid]]\nshape = \"box\"\nmin = [0.5, 0.5]\nmax = [0.6, 0.6]\n"
+                          "displacement_table = \"" +
+                          (dir / "bad.csv").string() + "\"\n") ==
+        "bad.toml:22:22: [[solid]] #0 displacement_table: " + (dir / "bad.csv").string() +
+            ":3: the times must increase");
+  CHECK(test::scene_error(
+            base +
+            "[method]\nname = \"isph\"\n[[solid]]\nshape = \"box\"\nmin = [0.5, 0.5]\nmax = [0.6, 0.6]\n"
+            "displacement = [\"t\", \"0\"]\n") ==
+        "bad.toml:24:16: [[solid]] #0 moves, but method isph's wall rows do not take a wall's normal "
+        "velocity yet (ISPH "
         "paper eq. 17): a piston threw particles out within 1.5 s; use wcsph or mps");
   test::write_text(dir / "in_body.csv", "x, y\n0.55, 0.55\n");
-  CHECK(test::scene_error(base + "[[solid]]\nshape = \"box\"\nmin = [0.5, 0.5]\nmax = [0.6, 0.6]\n"
-                                 "[[import]]\nfile = \"" + (dir / "in_body.csv").string() + "\"\n") ==
-        "bad.toml:23:8: [[import]] #0: a particle at (0.55, 0.55) lies in [[solid]] 'solid0' or within half a "
-        "spacing of it");
+  CHECK(
+      test::scene_error(base +
+                        "[[solid]]\nshape = \"box\"\nmin = [0.5, 0.5]\nmax = [0.6, 0.6]\n"
+                        "[[import]]\nfile = \"" +
+                        (dir / "in_body.csv").string() + "\"\n") ==
+      "bad.toml:23:8: [[import]] #0: a particle at (0.55, 0.55) lies in [[solid]] 'solid0' or within half a "
+      "spacing of it");
+}
+
+TEST_CASE("fluid shapes: a disc and a ball of fluid hold their area and volume in particles") {
+  auto dir = test::unique_scratch("fluid_shapes");
+  std::filesystem::create_directories(dir);
+  auto count = [&](const std::string& text) {
+    test::write_text(dir / "s.toml", text);
+    auto r = test::run_command(bin() + " check " + (dir / "s.toml").string() + " --write-initial " +
+                               (dir / "init").string());
+    REQUIRE_MESSAGE(r.code == 0, r.output);
+    auto kind = test::read_dataset(dir / "init" / "frames" / "frame_00000.h5", "kind").values;
+    return double(std::count(kind.begin(), kind.end(), 0.0));
+  };
+  // R = 10 d: the lattice points within R of the centre, pi R^2 / d^2 = 314.2 (measured 316).
+  const double disc = count(
+      "[scene]\ndimension = 2\n[domain]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n[particles]\n"
+      "spacing = 0.01\n[physics]\ngravity = [0.0, 0.0]\n[time]\nend = 0.1\n"
+      "[[fluid]]\nshape = \"cylinder\"\ncentre = [0.5, 0.5]\nradius = 0.1\n");
+  CHECK(std::abs(disc / (kPi * 100) - 1) < 0.02);
+  const double ball = count(
+      "[scene]\ndimension = 3\n[domain]\nmin = [0.0, 0.0, 0.0]\nmax = [1.0, 1.0, 1.0]\n"
+      "[particles]\nspacing = 0.02\n[physics]\ngravity = [0.0, 0.0, 0.0]\n[time]\nend = 0.1\n"
+      "[[fluid]]\nshape = \"sphere\"\ncentre = [0.5, 0.5, 0.5]\nradius = 0.2\n");
+  CHECK(std::abs(ball / (4.0 / 3 * kPi * 1000) - 1) < 0.02);  // 4,189; measured 4,224, as the STL sphere
+  CAPTURE(disc);
+  CAPTURE(ball);
+  CHECK(test::scene_error(
+            "[scene]\ndimension = 2\n[domain]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n[particles]\n"
+            "spacing = 0.01\n[time]\nend = 0.1\n[[fluid]]\nshape = \"cylinder\"\nradius = 0.1\n") ==
+        "bad.toml:10:1: [[fluid]] #0 (a cylinder) needs centre and radius");
 }

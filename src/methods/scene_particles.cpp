@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 
 #include "ecs/lattice.hpp"
@@ -35,7 +36,15 @@ SceneParticles<D> scene_particles(const Scene& s) {
     for (int a = 0; a < D; ++a) to[a] = std::lround((b.max[a] - b.min[a]) / d);
     double top = b.min[D - 1] + to[D - 1] * d;
     Vec<D> centre = 0.5 * (scene_vector<D>(b.min) + scene_vector<D>(b.max));
+    std::optional<SolidShape<D>> round;  // a disc, cylinder or ball of fluid: the same shape as a body's
+    if (b.shape != "box") {
+      SolidSpec shape;
+      shape.shape = b.shape, shape.centre = b.centre, shape.radius = b.radius, shape.axis = b.axis;
+      shape.min = b.min, shape.max = b.max;
+      round.emplace(shape);
+    }
     for_each_lattice_point<D>(lo, d, from, to, [&](const Vec<D>& lattice) {
+      if (round && round->signed_distance(lattice) >= 0) return;
       if (!solids.empty() && inside_solid(lattice)) return;
       if constexpr (D == 3)
         if (b.mesh >= 0 && !s.meshes[b.mesh].mesh->inside(lattice)) return;

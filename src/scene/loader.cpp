@@ -550,8 +550,27 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   if (auto* arr = root["fluid"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
       FluidBlock b;
-      b.min = vec_of(*where("fluid", i, "min"));
-      b.max = vec_of(*where("fluid", i, "max"));
+      const std::string label = "[[fluid]] #" + std::to_string(i);
+      b.shape = *root["fluid"][i]["shape"].value<std::string>();
+      if (b.shape == "box") {
+        if (!where("fluid", i, "min") || !where("fluid", i, "max"))
+          val.fail(&(*arr)[i], path_of("fluid", i, "min"), label + " (a box) needs min and max");
+        b.min = vec_of(*where("fluid", i, "min"));
+        b.max = vec_of(*where("fluid", i, "max"));
+      } else {
+        if (!where("fluid", i, "centre") || !where("fluid", i, "radius"))
+          val.fail(&(*arr)[i], path_of("fluid", i, "centre"), label + " (a " + b.shape + ") needs centre and radius");
+        b.centre = vec_of(*where("fluid", i, "centre"));
+        b.radius = *root["fluid"][i]["radius"].value<double>();
+        b.axis = static_cast<int>(*root["fluid"][i]["axis"].value<long long>());
+        const bool along_axis = D == 3 && b.shape == "cylinder";
+        if (along_axis && (!where("fluid", i, "min") || !where("fluid", i, "max")))
+          val.fail(&(*arr)[i], path_of("fluid", i, "min"), label + " (a 3D cylinder) needs min and max for its extent along its axis");
+        b.min = where("fluid", i, "min") ? vec_of(*where("fluid", i, "min")) : b.centre;
+        b.max = where("fluid", i, "max") ? vec_of(*where("fluid", i, "max")) : b.centre;
+        for (int a = 0; a < D; ++a)
+          if (!(along_axis && a == b.axis) && !where("fluid", i, "min")) b.min[a] = b.centre[a] - b.radius, b.max[a] = b.centre[a] + b.radius;
+      }
       if (auto* v = where("fluid", i, "velocity")) {
         b.velocity.assign(D, 0.0);
         b.velocity_expression.assign(D, "");
@@ -565,7 +584,6 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
         b.velocity_where = val.location(v, path_of("fluid", i, "velocity"));
       }
       if (where("fluid", i, "mesh")) {
-        const std::string label = "[[fluid]] #" + std::to_string(i);
         b.mesh = mesh_named("fluid", i, label);
         if (!sc.meshes[b.mesh].mesh->closed())
           val.fail(where("fluid", i, "mesh"), path_of("fluid", i, "mesh"),

@@ -33,6 +33,11 @@ struct FluidBlock {
   std::vector<std::string> velocity_expression;
   std::string pressure_expression, velocity_where, pressure_where;
   int mesh = -1;  // only the lattice points inside this [[mesh]] (index; -1: the whole box)
+  // Round blocks: only the lattice points within radius of centre (cylinder, sphere; "box": all).
+  std::string shape = "box";
+  std::vector<double> centre;
+  double radius = 0;
+  int axis = 2;
   double angular_velocity = 0;    // 2D: initial rigid rotation (omega (y - yc), -omega (x - xc))
   // swe: the water depth, or the surface elevation (depth = surface - bed), NaN when not given.
   double depth = std::numeric_limits<double>::quiet_NaN();
