@@ -76,22 +76,18 @@ template <int D>
 void populate_isph_world(const Scene& s, const IsphParameters<D>& p, World<D>& world) {
   const double g_up = -p.gravity[D - 1];
   // Incompressible: density rho0 everywhere; the hydrostatic pressure is the first solve's guess.
-  append_scene_particles<D>(
+  const auto appended = append_scene_particles<D>(
       s, p.rho0, world,
       [&](double depth, double given) {
         return std::pair{p.rho0, !std::isnan(given) ? given : s.hydrostatic_init ? p.rho0 * g_up * depth : 0.0};
       },
       [](int) { return kWall; }, [](int layer) { return layer == 1; });
   // The normals of the kept (layer-1) wall particles, in the order they were appended.
-  auto particles = scene_particles<D>(s);
   auto& normal = world.ensure(components::wall_normal);
   auto& kind = world.column(components::kind);
   std::size_t next = 0;
-  for (std::size_t i = 0; i < world.size(); ++i) {
-    if (kind[i] != kWall) continue;
-    while (particles.wall_layer[next] != 1) ++next;
-    normal[i] = particles.wall_normal[next++];
-  }
+  for (std::size_t i = 0; i < world.size(); ++i)
+    if (kind[i] == kWall) normal[i] = appended.wall_normal[next++];
   if (!p.fixed_pressure) return;
   // [[fixed_pressure]]: the fluid particles inside a box hold p = pressure + gradient . x.
   auto& fixed = world.ensure(components::fixed_pressure);

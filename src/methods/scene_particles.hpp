@@ -42,8 +42,9 @@ SceneParticles<D> scene_particles(const Scene& scene);
 // pressure, NaN where none) and mass = density * d^D (each lattice cell holds its fluid), then
 // the wall particles with kind = wall_kind(layer), density rho0, mass rho0 d^D and their body's
 // velocity; a method that keeps only some layers drops the others with keep_layer.
+// Returns the particles as appended (the kept wall layers, in order), for what a method adds.
 template <int D, class FluidState, class WallKind, class KeepLayer = bool (*)(int)>
-void append_scene_particles(
+SceneParticles<D> append_scene_particles(
     const Scene& s, double rho0, World<D>& world, FluidState&& fluid_state, WallKind&& wall_kind,
     KeepLayer&& keep_layer = [](int) { return true; }) {
   const double volume = std::pow(s.spacing, D);
@@ -100,6 +101,7 @@ void append_scene_particles(
     rho[i] = rho0;
     if (!body.empty()) body[i] = particles.wall_body[k];
   }
+  return particles;
 }
 
 }  // namespace ryushi

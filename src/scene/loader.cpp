@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include <spdlog/spdlog.h>
 
@@ -215,6 +216,19 @@ std::string field_text(const toml::node& n) {
   number.precision(17);
   number << *n.value<double>();
   return number.str();
+}
+
+// The bounding box of a disc or ball of `radius` about `centre`; on axis `along` (a 3D
+// cylinder's; -1: none) the box spans [lo, hi] instead.
+std::pair<std::vector<double>, std::vector<double>> round_box(const std::vector<double>& centre, double radius,
+                                                              int along, const std::vector<double>& lo,
+                                                              const std::vector<double>& hi) {
+  std::vector<double> min = centre, max = centre;
+  for (std::size_t a = 0; a < centre.size(); ++a) {
+    min[a] = static_cast<int>(a) == along ? lo[a] : centre[a] - radius;
+    max[a] = static_cast<int>(a) == along ? hi[a] : centre[a] + radius;
+  }
+  return {min, max};
 }
 
 // Applies one `section.key=value` or `section.N.key=value` override to the tree.
@@ -547,6 +561,12 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       if (sc.meshes[k].name == name) return static_cast<int>(k);
     val.fail(where(section, i, "mesh"), path_of(section, i, "mesh"), label + ": there is no [[mesh]] named '" + name + "'");
   };
+  // centre, radius and axis of a round [[fluid]] block or [[solid]] body.
+  auto read_round = [&](const char* section, std::size_t i, auto& b) {
+    b.centre = vec_of(*where(section, i, "centre"));
+    b.radius = *root[section][i]["radius"].value<double>();
+    b.axis = static_cast<int>(*root[section][i]["axis"].value<long long>());
+  };
   if (auto* arr = root["fluid"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
       FluidBlock b;
@@ -560,16 +580,12 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       } else {
         if (!where("fluid", i, "centre") || !where("fluid", i, "radius"))
           val.fail(&(*arr)[i], path_of("fluid", i, "centre"), label + " (a " + b.shape + ") needs centre and radius");
-        b.centre = vec_of(*where("fluid", i, "centre"));
-        b.radius = *root["fluid"][i]["radius"].value<double>();
-        b.axis = static_cast<int>(*root["fluid"][i]["axis"].value<long long>());
-        const bool along_axis = D == 3 && b.shape == "cylinder";
-        if (along_axis && (!where("fluid", i, "min") || !where("fluid", i, "max")))
+        read_round("fluid", i, b);
+        const bool given = where("fluid", i, "min") && where("fluid", i, "max");
+        if (D == 3 && b.shape == "cylinder" && !given)
           val.fail(&(*arr)[i], path_of("fluid", i, "min"), label + " (a 3D cylinder) needs min and max for its extent along its axis");
-        b.min = where("fluid", i, "min") ? vec_of(*where("fluid", i, "min")) : b.centre;
-        b.max = where("fluid", i, "max") ? vec_of(*where("fluid", i, "max")) : b.centre;
-        for (int a = 0; a < D; ++a)
-          if (!(along_axis && a == b.axis) && !where("fluid", i, "min")) b.min[a] = b.centre[a] - b.radius, b.max[a] = b.centre[a] + b.radius;
+        std::tie(b.min, b.max) = given ? std::pair{vec_of(*where("fluid", i, "min")), vec_of(*where("fluid", i, "max"))}
+                                       : round_box(b.centre, b.radius, -1, {}, {});
       }
       if (auto* v = where("fluid", i, "velocity")) {
         b.velocity.assign(D, 0.0);
@@ -741,15 +757,9 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
         for (int a = 0; a < D; ++a) need(b.max[a] > b.min[a], "max", "is empty (max <= min on axis " + std::to_string(a) + ")");
       } else {
         need(where("solid", i, "centre") && where("solid", i, "radius"), "centre", "(a " + b.shape + ") needs centre and radius");
-        b.centre = vec_of(*where("solid", i, "centre"));
-        b.radius = *t["radius"].value<double>();
-        b.axis = static_cast<int>(*t["axis"].value<long long>());
-        b.min = b.centre, b.max = b.centre;
-        for (int a = 0; a < D; ++a) {
-          const bool along = D == 3 && b.shape == "cylinder" && a == b.axis;
-          b.min[a] = along ? sc.domain_min[a] : b.centre[a] - b.radius;
-          b.max[a] = along ? sc.domain_max[a] : b.centre[a] + b.radius;
-        }
+        read_round("solid", i, b);
+        std::tie(b.min, b.max) = round_box(b.centre, b.radius, D == 3 && b.shape == "cylinder" ? b.axis : -1,
+                                           sc.domain_min, sc.domain_max);
       }
       need(inside(b.min, b.max), b.shape == "box" ? "min" : b.shape == "mesh" ? "mesh" : "centre",
            "lies (partly) outside the domain");

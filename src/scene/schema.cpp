@@ -42,6 +42,14 @@ std::string methods_doc() {
   return doc;
 }
 
+// centre, radius and axis of the round shapes ([[fluid]] and [[solid]] `shape`), after `shape`.
+void add_round_keys(SectionSpec& section, const std::string& centre_doc) {
+  auto shape = std::find_if(section.keys.begin(), section.keys.end(), [](auto& k) { return k.key == "shape"; });
+  section.keys.insert(shape + 1, {{"centre", KeyType::Vector, "m", "", centre_doc},
+                                  positive("radius", "m", "", "cylinder, sphere: radius."),
+                                  ranged({"axis", KeyType::Integer, "", "2", "3D cylinder: the axis (0, 1, 2) it runs along."}, 0, 2)});
+}
+
 std::vector<SectionSpec> build() {
   using K = KeyType;
   std::vector<SectionSpec> s;
@@ -168,15 +176,13 @@ std::vector<SectionSpec> build() {
                {{"min", K::Vector, "m", "(shape box: required; round shapes: their bounding box)", "Lower corner."},
                 {"max", K::Vector, "m", "(shape box: required; round shapes: their bounding box)", "Upper corner."},
                 choice("shape", "\"box\"", "box: [min, max]; cylinder: the lattice points within `radius` of `centre` (2D a disc; 3D a cylinder along `axis` over [min, max] on that axis, required there); sphere: within `radius` of `centre` (3D; a disc in 2D). The lattice starts at min (default centre - radius).", {"box", "cylinder", "sphere"}),
-                {"centre", K::Vector, "m", "", "cylinder, sphere: centre."},
-                positive("radius", "m", "", "cylinder, sphere: radius."),
-                ranged({"axis", K::Integer, "", "2", "3D cylinder: the axis (0, 1, 2) it runs along."}, 0, 2),
                 {"velocity", K::FieldVector, "m/s", "(at rest)", "Initial velocity of the block's particles, one entry per axis: a number, or an expression of the particle's x, y, z as a string (muparser syntax: + - * / ^, sin, cos, tan, exp, log, sqrt, abs, min, max, pi, e, `c ? a : b`), e.g. [\"sin(2*pi*x)*cos(2*pi*y)\", \"-cos(2*pi*x)*sin(2*pi*y)\"]. A bad expression is an error at the key with the parser's message; a value that is not finite at some particle is an error naming the particle's place."},
                 {"mesh", K::String, "", "(the whole box)", "3D: fill only the lattice points of [min, max] inside this closed [[mesh]] (by name)."},
                 {"pressure", K::FieldValue, "Pa", "(hydrostatic)", "Initial pressure of the block's particles: a number or an expression of x, y, z (as for `velocity`), in place of the hydrostatic start (methods wcsph, mps, isph). WCSPH gives each particle the density that its equation of state maps to this pressure; MPS and ISPH take it as the first pressure solve's guess and for output."},
                 {"angular_velocity", K::Float, "1/s", "0.0", "2D: initial rigid rotation about the block's centre, v = (omega (y - yc), -omega (x - xc)) (clockwise for omega > 0; the rotating square patch), added to `velocity`."},
                 positive("depth", "m", "(none)", "swe: the water depth of the block (one of depth and surface_elevation is required)."),
                 {"surface_elevation", K::Float, "m", "(none)", "swe: the water surface of the block; depth = surface_elevation - bed, and lattice points where that is not positive are dry (no particle): a lake over a bumpy bed."}}});
+  add_round_keys(s.back(), "cylinder, sphere: centre.");
   s.push_back({"wall", true, false, "A rigid container: `layers` of wall particles outside the box [min, max]. swe: the box's sides are mirror lines for ghost particles (layers only has to keep the domain large enough; open_top is ignored, a plan view has no top; open_ends opens an axis).",
                {{"min", K::Vector, "m", "", "Inner lower corner.", true},
                 {"max", K::Vector, "m", "", "Inner upper corner.", true},
@@ -197,13 +203,11 @@ std::vector<SectionSpec> build() {
                 {"mesh", K::String, "", "", "shape = \"mesh\": the [[mesh]]'s name."},
                 {"min", K::Vector, "m", "", "box: lower corner."},
                 {"max", K::Vector, "m", "", "box: upper corner."},
-                {"centre", K::Vector, "m", "", "cylinder, sphere: centre (3D cylinder: any point on its axis)."},
-                positive("radius", "m", "", "cylinder, sphere: radius."),
-                ranged({"axis", K::Integer, "", "2", "3D cylinder: the axis (0, 1, 2) it runs along."}, 0, 2),
                 {"velocity", K::Vector, "m/s", "(at rest)", "Prescribed constant velocity of the body's surface (its particles do not move): the lid of a cavity, the moving plate of a Couette flow."},
                 {"displacement", K::FieldVector, "m", "(none)", "Prescribed motion: per axis the displacement from the rest position as a formula of t and the particle's rest position x, y, z (as for [[fluid]] velocity), e.g. [\"0.02*sin(2*pi*t)\", \"0\"] for a piston wave maker; a rotation by angle a(t) about (xc, yc) is [\"(x-xc)*(cos(a)-1) - (y-yc)*sin(a)\", \"(x-xc)*sin(a) + (y-yc)*(cos(a)-1)\"]. The particles move with it at the start of every step and carry its time derivative as their velocity. Not with `velocity`."},
                 {"displacement_table", K::String, "", "(none)", "Prescribed motion from a CSV (relative to the scene file): a header, then rows t, dx, dy[, dz] with increasing t; linear between rows (the row's slope is the velocity), the first row's displacement before it, the last one's after. Instead of `displacement`."},
                 ranged({"layers", K::Integer, "", "(as [[wall]]: ceil(support / spacing); isph 1)", "Thickness in particle layers, inward from the surface."}, 1, 16)}});
+  add_round_keys(s.back(), "cylinder, sphere: centre (3D cylinder: any point on its axis).");
   s.push_back({"fixed_pressure", true, false,
                "isph, description = \"eulerian\": the fluid particles inside the box [min, max] hold the pressure p = pressure + gradient . x (a Dirichlet value: a channel's inlet or outlet). Make it at least a support radius long along the flow, so that the particles next to it have a full support. docs/isph.md.",
                {{"min", K::Vector, "m", "", "Lower corner.", true},
