@@ -22,12 +22,16 @@ SceneParticles<D> scene_particles(const Scene& s) {
   std::vector<SolidShape<D>> solids;
   for (auto& spec : s.solids) solids.emplace_back(spec, spec.mesh >= 0 ? s.meshes[spec.mesh].mesh : nullptr);
   // A block with an obstacle in it: lattice points within half a spacing of a solid are not fluid
-  // (the solid's first layer lies half a spacing inside its surface).
+  // (the solid's first layer lies half a spacing inside its surface). A container's wall is the
+  // fluid's lattice outside it (solid_shape.cpp): the points outside are not fluid, the rest are.
   auto inside_solid = [&](const Vec<D>& x) {
-    for (auto& shape : solids)
-      if (shape.within(x, 0.5 * d * (1 - 1e-9))) return true;
+    for (std::size_t k = 0; k < solids.size(); ++k)
+      if (solids[k].within(x, s.solids[k].container ? 0.0 : 0.5 * d * (1 - 1e-9))) return true;
     return false;
   };
+  // The fluid's lattice, which a container's layers continue: the first block's.
+  std::optional<Vec<D>> lattice_origin;
+  if (!s.fluid.empty()) lattice_origin = scene_vector<D>(s.fluid.front().min);
   for (std::size_t index = 0; index < s.fluid.size(); ++index) {
     const FluidBlock& b = s.fluid[index];
     const BlockFields fields(b, index);
@@ -102,7 +106,7 @@ SceneParticles<D> scene_particles(const Scene& s) {
   }
   for (std::size_t k = 0; k < solids.size(); ++k) {
     const Vec<D> velocity = scene_vector<D>(s.solids[k].velocity);
-    for (auto& particle : solids[k].shell(d)) {
+    for (auto& particle : solids[k].shell(d, lattice_origin ? &*lattice_origin : nullptr)) {
       out.wall.push_back(particle.position);
       out.wall_layer.push_back(particle.layer);
       out.wall_normal.push_back(particle.normal);

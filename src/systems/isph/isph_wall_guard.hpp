@@ -55,7 +55,8 @@ class IsphWallGuard final : public System<D> {
       // behind the other keep their distance instead of landing on the same spot.
       x[i] += 2 * (min_distance_ - depth) * (-n);
       domain_.wrap(x[i]);
-      if (double towards = v[i].dot(n); towards > 0) v[i] -= towards * n;
+      // Relative to the wall: a piston moving into the fluid carries the particle with it.
+      if (double towards = (v[i] - v[wall]).dot(n); towards > 0) v[i] -= towards * n;
       events.fetch_add(1, std::memory_order_relaxed);
     });
     ctx.write(resources::wall_guard_events) += events.load();
