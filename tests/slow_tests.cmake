@@ -54,3 +54,7 @@ set_tests_properties("stability: an MPS tank started with 30% disorder settles" 
 set_tests_properties("stability: a WCSPH tank started with 30% disorder settles" PROPERTIES LABELS "stability;slow" COST 10)
 set_tests_properties("solid: a piston wave maker makes the waves of linear wave-maker theory (WCSPH)"
                      PROPERTIES LABELS slow COST 40)
+set_tests_properties("solid: MPS and ISPH read the sliding plate's drag from their own wall layer"
+                     PROPERTIES LABELS slow COST 14)
+set_tests_properties("container: a tank accelerating upwards is the tank at rest under g + a (WCSPH wall acceleration)"
+                     PROPERTIES LABELS slow COST 10)

@@ -443,8 +443,7 @@ class Runner {
     next_probe_ = (std::floor(time_ / scene_.probe_interval + 1e-9) + 1) * scene_.probe_interval;
     if (scene_.probes.empty()) return;
     Profiler::Scope t(profiler_, slot_probes_);
-    auto values = sample_probes<D>(scene_.probes, world_, context_.kernel, scene_.spacing, context_.rho0, context_.domain,
-                                   context_.gravity);
+    auto values = sample_probes<D>(scene_.probes, world_, context_);
     values.insert(values.begin(), time_);
     probe_rows_.push_back(std::move(values));
   }

@@ -67,6 +67,13 @@ inline constexpr Component<Scalar> density_start{"density_start"};
 inline constexpr Component<Flags> body{"body"};
 // Where a moving [[solid]]'s particle rests (its displacement is added to it); only in scenes with one.
 inline constexpr Component<Vector> body_origin{"body_origin"};
+// Unit normal of a wall particle, out of the fluid into the wall (ISPH's single wall layer).
+inline constexpr Component<Vector> wall_normal{"wall_normal"};
+// A body's first-layer particle's share of its surface times the unit normal into it (m^(D-1));
+// zero elsewhere. Only MPS and ISPH scenes with a force probe have it.
+inline constexpr Component<Vector> surface_element{"surface_element"};
+// A moving [[solid]]'s particle's prescribed acceleration (Adami's wall pressure); with body_origin.
+inline constexpr Component<Vector> body_acceleration{"body_acceleration"};
 }  // namespace components
 
 }  // namespace ryushi

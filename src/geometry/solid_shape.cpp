@@ -1,6 +1,8 @@
 #include "geometry/solid_shape.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "ecs/lattice.hpp"
@@ -51,6 +53,8 @@ double SolidShape<D>::shape_distance(const Vec<D>& x) const {
     }
   if (spec_.shape == "box") {
     Vec<D> q = (x - 0.5 * (lo_ + hi_)).cwiseAbs() - 0.5 * (hi_ - lo_);
+    for (int a = 0; a < D; ++a)
+      if (endless(a)) q[a] = -std::numeric_limits<double>::max();  // no faces across a periodic span
     return q.cwiseMax(0.0).norm() + std::min(q.maxCoeff(), 0.0);
   }
   Vec<D> r = x - centre_;
@@ -77,6 +81,15 @@ std::vector<ShellParticle<D>> SolidShape<D>::shell(double d, const Vec<D>* latti
   return spec_.shape == "box" ? box_shell(d) : round_shell(d);
 }
 
+// The circumference of a disc, the side of a 3D cylinder over its length, a sphere's surface.
+template <int D>
+double SolidShape<D>::round_surface() const {
+  const double R = spec_.radius;
+  if (D == 2) return 2 * std::numbers::pi * R;
+  if (spec_.shape == "cylinder") return 2 * std::numbers::pi * R * (hi_[spec_.axis] - lo_[spec_.axis]);
+  return 4 * std::numbers::pi * R * R;
+}
+
 template <int D>
 std::pair<Vec<D>, Vec<D>> SolidShape<D>::extent(double d) const {
   if (!spec_.container) return {lo_, hi_};
@@ -98,7 +111,8 @@ std::vector<ShellParticle<D>> SolidShape<D>::mesh_shell(double d) const {
       const Vec<D> towards = x - mesh_->closest(x);
       const double depth = towards.norm();
       if (depth > spec_.layers * d || depth <= 0 || !mesh_->inside(x)) return;
-      out.push_back({x, std::max(1, static_cast<int>(std::ceil(depth / d - 1e-9))), Vec<D>(towards / depth)});
+      const int layer = std::max(1, static_cast<int>(std::ceil(depth / d - 1e-9)));
+      out.push_back({x, layer, Vec<D>(towards / depth), layer == 1 ? d * d : 0.0});
     });
   }
   return out;
@@ -114,14 +128,19 @@ std::vector<ShellParticle<D>> SolidShape<D>::box_shell(double d) const {
   const Vec<D> centre = 0.5 * (lo_ + hi_), half = 0.5 * (hi_ - lo_);
   std::vector<ShellParticle<D>> out;
   for_each_lattice_point<D>(lo_, d, from, to, [&](const Vec<D>& x) {
-    const Vec<D> q = (x - centre).cwiseAbs() - half;  // minus the depth below each face pair
+    Vec<D> q = (x - centre).cwiseAbs() - half;  // minus the depth below each face pair
+    for (int a = 0; a < D; ++a)
+      if (endless(a)) q[a] = -std::numeric_limits<double>::max();  // a plate through a periodic axis
     const double depth = -q.maxCoeff();
     const int layer = static_cast<int>(std::ceil(depth / d - 1e-9));
     if (layer > spec_.layers) return;
     Vec<D> normal = Vec<D>::Zero();
     for (int a = 0; a < D; ++a)
       if (q[a] >= q.maxCoeff() - 1e-9 * d) normal[a] = x[a] > centre[a] ? -1.0 : 1.0;
-    out.push_back({x, std::max(layer, 1), normal.normalized()});
+    // A face particle stands for d^(D-1) of its face; an edge or corner particle for as much of
+    // each face it lies under (k faces: sqrt(k) d^(D-1) along the bisector).
+    const Vec<D> unit = normal.normalized();
+    out.push_back({x, std::max(layer, 1), unit, layer <= 1 ? std::pow(d, D - 1) * unit.template lpNorm<1>() : 0.0});
   });
   return out;
 }
@@ -158,8 +177,20 @@ std::vector<ShellParticle<D>> SolidShape<D>::container_shell(double d, const Vec
       normal = x - centre_;
       if (D == 3 && spec_.shape == "cylinder") normal[spec_.axis] = 0;
     }
-    out.push_back({x, std::max(1, static_cast<int>(std::ceil(outside / d - 1e-9))), normal.normalized()});
+    const int layer = std::max(1, static_cast<int>(std::ceil(outside / d - 1e-9)));
+    out.push_back({x, layer, normal.normalized(), 0.0});
   });
+  // The surface each first-layer particle stands for: a box face's lattice points d^(D-1) each
+  // (its edges and corners, outside two faces, none); a round or mesh container's share of its
+  // surface, which the first layer's zigzag covers about evenly.
+  std::size_t first = 0;
+  for (auto& q : out) first += q.layer == 1;
+  double share = std::pow(d, D - 1);
+  if (!mesh_ && spec_.shape != "box" && first > 0) {
+    share = round_surface() / first;
+  }
+  for (auto& q : out)
+    if (q.layer == 1) q.area = (mesh_ || spec_.shape != "box" || q.normal.cwiseAbs().maxCoeff() > 1 - 1e-12) ? share : 0.0;
   return out;
 }
 
@@ -176,6 +207,7 @@ std::vector<ShellParticle<D>> SolidShape<D>::round_shell(double d) const {
       break;
     }
     const double phase = 0.5 * (k % 2);  // stagger the layers
+    const std::size_t ring_start = out.size();
     if constexpr (D == 2) {
       for (auto [cx, cy] : ring(r, d, phase)) {
         Vec<D> offset(cx, cy);
@@ -201,6 +233,9 @@ std::vector<ShellParticle<D>> SolidShape<D>::round_shell(double d) const {
         unit[0] = rho * std::cos(angle), unit[1] = rho * std::sin(angle), unit[2] = z;
         out.push_back({centre_ + r * unit, k, Vec<D>(-unit)});
       }
+    }
+    if (k == 1 && out.size() > ring_start) {  // the surface at the radius, shared by the ring's points
+      for (std::size_t q = ring_start; q < out.size(); ++q) out[q].area = round_surface() / (out.size() - ring_start);
     }
   }
   return out;

@@ -19,6 +19,9 @@ struct ShellParticle {
   Vec<D> position;
   int layer;
   Vec<D> normal;  // unit, from the fluid into the body
+  // Layer 1: the share of the body's surface the particle stands for (m^(D-1); the surface
+  // pressure times it is the force there: solid_surface_force.hpp); 0 on deeper layers.
+  double area = 0;
 };
 
 template <int D>
@@ -47,6 +50,8 @@ class SolidShape {
   std::vector<ShellParticle<D>> mesh_shell(double d) const;
   std::vector<ShellParticle<D>> container_shell(double d, const Vec<D>& origin) const;
   double shape_distance(const Vec<D>& x) const;  // negative inside the shape
+  double round_surface() const;
+  bool endless(int axis) const { return axis < static_cast<int>(spec_.endless.size()) && spec_.endless[axis]; }
   SolidSpec spec_;
   std::shared_ptr<const TriangleMesh> mesh_;
   Vec<D> lo_, hi_, centre_;

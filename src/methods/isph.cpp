@@ -88,6 +88,7 @@ void populate_isph_world(const Scene& s, const IsphParameters<D>& p, World<D>& w
   std::size_t next = 0;
   for (std::size_t i = 0; i < world.size(); ++i)
     if (kind[i] == kWall) normal[i] = appended.wall_normal[next++];
+  add_surface_elements(s, appended, world);
   if (!p.fixed_pressure) return;
   // [[fixed_pressure]]: the fluid particles inside a box hold p = pressure + gradient . x.
   auto& fixed = world.ensure(components::fixed_pressure);

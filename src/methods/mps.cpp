@@ -11,6 +11,7 @@
 //   time_step_control        dt for the next step
 // Fluid particles move; wall particles (the innermost wall_pressure_layers) carry pressure;
 // the outer wall layers are dummies that only complete the number density.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -62,12 +63,13 @@ template <int D>
 void populate_mps_world(const Scene& s, const MpsParameters<D>& p, World<D>& world) {
   const double g_up = -p.gravity[D - 1];
   // Incompressible: density rho0 everywhere; the hydrostatic pressure is the first solve's guess.
-  append_scene_particles<D>(
+  const auto appended = append_scene_particles<D>(
       s, p.rho0, world,
       [&](double depth, double given) {
         return std::pair{p.rho0, !std::isnan(given) ? given : s.hydrostatic_init ? p.rho0 * g_up * depth : 0.0};
       },
       [&](int layer) { return layer <= s.wall_pressure_layers ? kWall : kDummy; });
+  add_surface_elements(s, appended, world);
 }
 
 template <int D>

@@ -102,6 +102,7 @@ SceneParticles<D> scene_particles(const Scene& s) {
       out.wall_normal.push_back(normal.normalized());
       out.wall_velocity.push_back(Vec<D>::Zero());
       out.wall_body.push_back(-1);
+      out.wall_area.push_back(0.0);
     });
   }
   for (std::size_t k = 0; k < solids.size(); ++k) {
@@ -112,6 +113,7 @@ SceneParticles<D> scene_particles(const Scene& s) {
       out.wall_normal.push_back(particle.normal);
       out.wall_velocity.push_back(velocity);
       out.wall_body.push_back(static_cast<int>(k));
+      out.wall_area.push_back(particle.area);
     }
   }
   return out;

@@ -32,6 +32,7 @@ struct SceneParticles {
   std::vector<Vec<D>> wall_normal;
   std::vector<Vec<D>> wall_velocity;  // a [[solid]]'s prescribed velocity; zero for containers
   std::vector<int> wall_body;         // the [[solid]]'s index; -1 for containers
+  std::vector<double> wall_area;      // a body's first layer: the surface each stands for (else 0)
 };
 
 template <int D>
@@ -52,7 +53,7 @@ SceneParticles<D> append_scene_particles(
   {  // only the kept wall layers
     SceneParticles<D> kept = particles;
     kept.wall.clear(), kept.wall_layer.clear(), kept.wall_normal.clear();
-    kept.wall_velocity.clear(), kept.wall_body.clear();
+    kept.wall_velocity.clear(), kept.wall_body.clear(), kept.wall_area.clear();
     for (std::size_t k = 0; k < particles.wall.size(); ++k)
       if (keep_layer(particles.wall_layer[k])) {
         kept.wall.push_back(particles.wall[k]);
@@ -60,6 +61,7 @@ SceneParticles<D> append_scene_particles(
         kept.wall_normal.push_back(particles.wall_normal[k]);
         kept.wall_velocity.push_back(particles.wall_velocity[k]);
         kept.wall_body.push_back(particles.wall_body[k]);
+        kept.wall_area.push_back(particles.wall_area[k]);
       }
     particles = std::move(kept);
   }
@@ -89,8 +91,10 @@ SceneParticles<D> append_scene_particles(
   }
   std::span<Vec<D>> origin;
   if (std::any_of(s.solids.begin(), s.solids.end(),
-                  [](auto& b) { return !b.displacement.empty() || !b.displacement_table.empty(); }))
+                  [](auto& b) { return !b.displacement.empty() || !b.displacement_table.empty(); })) {
     origin = world.ensure(components::body_origin);
+    world.ensure(components::body_acceleration);  // zero until the motion sets it
+  }
   for (std::size_t k = 0; k < particles.wall.size(); ++k) {
     std::size_t i = wfirst + k;
     if (!origin.empty()) origin[i] = particles.wall[k];
@@ -102,6 +106,19 @@ SceneParticles<D> append_scene_particles(
     if (!body.empty()) body[i] = particles.wall_body[k];
   }
   return particles;
+}
+
+// For a method whose pressure lives on the walls' first layer (MPS, ISPH) and a scene with a
+// `force` probe: each body particle's surface element, area times the unit normal into the body
+// (zero elsewhere), for the pressure integral of solid_surface_force.hpp. `appended`: what
+// append_scene_particles returned, its walls the world's last particles.
+template <int D>
+void add_surface_elements(const Scene& s, const SceneParticles<D>& appended, World<D>& world) {
+  if (std::none_of(s.probes.begin(), s.probes.end(), [](const ProbeSpec& q) { return q.type == "force"; })) return;
+  auto& element = world.ensure(components::surface_element);
+  const std::size_t first = world.size() - appended.wall.size();
+  for (std::size_t k = 0; k < appended.wall.size(); ++k)
+    if (appended.wall_body[k] >= 0) element[first + k] = appended.wall_area[k] * appended.wall_normal[k];
 }
 
 }  // namespace ryushi

@@ -2,6 +2,7 @@
 // options from the scene, registered as "wcsph". One step: neighbour search, then two stages of
 // [wall BC, density gradient, pair forces (continuity, momentum, viscosity in one pass)] around
 // the predictor and corrector, the equation of state after each, and the time-step control.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -39,6 +40,9 @@ WcsphParameters<D> wcsph_parameters(const Scene& s) {
   p.beta = s.beta;
   p.mu = s.viscosity;
   p.wall_no_slip = !s.wall_slip;
+  p.wall_acceleration = std::any_of(s.solids.begin(), s.solids.end(), [](const SolidSpec& b) {
+    return !b.displacement.empty() || !b.displacement_table.empty();
+  });
   return p;
 }
 

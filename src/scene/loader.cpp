@@ -780,6 +780,23 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
         b.min = vec_of(*where("solid", i, "min"));
         b.max = vec_of(*where("solid", i, "max"));
         for (int a = 0; a < D; ++a) need(b.max[a] > b.min[a], "max", "is empty (max <= min on axis " + std::to_string(a) + ")");
+        b.endless.assign(D, false);
+        for (int a = 0; a < D; ++a)
+          b.endless[a] = sc.periodic[a] && b.min[a] <= sc.domain_min[a] + 1e-9 * sc.spacing &&
+                         b.max[a] >= sc.domain_max[a] - 1e-9 * sc.spacing;
+        // Its particles sit on min + (k + 1/2) d: a box of 1.5 spacings put its last column on its
+        // face, half a spacing from the fluid (the piston of the wave flume at d = 0.02 m let
+        // water through under it).
+        for (int a = 0; a < D; ++a) {
+          const double cells = (b.max[a] - b.min[a]) / sc.spacing;
+          if (std::abs(cells - std::round(cells)) > 1e-6 * std::max(1.0, cells)) {
+            std::ostringstream m;
+            m << "is " << cells << " spacings wide on axis " << a
+              << ": a box body takes whole spacings (its particles sit on min + (k + 1/2) d); make max - min a multiple of "
+              << sc.spacing;
+            need(false, "max", m.str());
+          }
+        }
       } else {
         need(where("solid", i, "centre") && where("solid", i, "radius"), "centre", "(a " + b.shape + ") needs centre and radius");
         read_round("solid", i, b);
@@ -796,6 +813,28 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       need(inside(outer_min, outer_max), b.shape == "box" ? "min" : b.shape == "mesh" ? "mesh" : "centre",
            b.container ? "lies (partly) outside the domain with its layers" : "lies (partly) outside the domain");
       need(!isph || b.layers == 1, "layers", "method isph uses one layer of wall particles (with normals); leave layers out or set 1");
+      if (mps && b.shape != "mesh") {
+        // MPS's pressure-solved first layer needs its dummy layers behind it (a complete number
+        // density), as for [[wall]]: a paddle two spacings thick read 63% of the hydrostatic
+        // thrust, its wall particles flagged as free surface.
+        const int reach = static_cast<int>(std::floor(sc.support_radius() / sc.spacing + 1e-9));
+        const int needed = sc.wall_pressure_layers + reach;
+        need(b.layers >= needed, "layers",
+             "has " + std::to_string(b.layers) + " layers; method mps needs layers >= wall_pressure_layers + floor(r_e / spacing) = " +
+                 std::to_string(needed));
+        double thinnest = 2 * b.radius / sc.spacing;
+        if (b.shape == "box") {
+          thinnest = 1e300;
+          for (int a = 0; a < D; ++a)
+            if (b.endless.empty() || !b.endless[a]) thinnest = std::min(thinnest, (b.max[a] - b.min[a]) / sc.spacing);
+        }
+        if (!b.container && thinnest < needed - 1e-9) {
+          std::ostringstream m;
+          m << "is " << thinnest << " spacings thick; method mps needs " << needed
+            << " (its first layer's dummy particles behind it: wall_pressure_layers + floor(r_e / spacing))";
+          need(false, b.shape == "box" ? "max" : "radius", m.str());
+        }
+      }
       for (auto& other : sc.solids)
         need(other.name != b.name, "name", "has the name of another solid, '" + b.name + "'");
       for (std::size_t k = 0; k < sc.solids.size(); ++k) {
@@ -885,10 +924,6 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       if (!p.position.empty() && !inside(p.position, p.position))
         val.fail(where("probe", i, "position"), path_of("probe", i, "position"), "[[probe]] '" + p.name + "' lies outside the domain");
       if (p.type == "force") {
-        if (sc.method != "wcsph")
-          val.fail(where("probe", i, "type"), path_of("probe", i, "type"),
-                   "[[probe]] '" + p.name + "': force probes sum WCSPH's pair forces; method " + sc.method +
-                       " has its own operators (not done)");
         auto solid_name = root["probe"][i]["solid"].value<std::string>();
         if (!solid_name)
           val.fail(&(*arr)[i], path_of("probe", i, "solid"), "[[probe]] '" + p.name + "' of type force needs `solid`, the name of a [[solid]]");

@@ -54,4 +54,17 @@ std::pair<std::array<double, 3>, std::array<double, 3>> sample_motion(const std:
   return {x, v};
 }
 
+std::array<double, 3> motion_acceleration(const std::vector<MotionSample>& table, double t) {
+  std::array<double, 3> a{0, 0, 0};
+  if (table.size() < 2) return a;
+  // The interval that holds t (the first or last one beyond the table's ends).
+  auto next = std::upper_bound(table.begin(), table.end(), t,
+                               [](double time, const MotionSample& s) { return time < s.t; });
+  next = std::clamp(next, table.begin() + 1, table.end() - 1);
+  const double span = next->t - (next - 1)->t;
+  const auto before = sample_motion(table, t - 0.5 * span).second, after = sample_motion(table, t + 0.5 * span).second;
+  for (int k = 0; k < 3; ++k) a[k] = (after[k] - before[k]) / span;
+  return a;
+}
+
 }  // namespace ryushi

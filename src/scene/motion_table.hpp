@@ -17,8 +17,11 @@ struct MotionSample {
 // Throws std::runtime_error("FILE:LINE: problem").
 std::vector<MotionSample> read_motion_table(const std::string& path, int dimension);
 
-// Displacement and velocity at time t (table not empty).
+// Displacement and velocity at time t (table not empty). The acceleration of a piecewise-linear
+// motion is a train of jumps; motion_acceleration spreads each over one row interval: the change
+// of the slope between t - span/2 and t + span/2, span the interval that holds t.
 std::pair<std::array<double, 3>, std::array<double, 3>> sample_motion(const std::vector<MotionSample>& table,
                                                                       double t);
+std::array<double, 3> motion_acceleration(const std::vector<MotionSample>& table, double t);
 
 }  // namespace ryushi

@@ -66,6 +66,9 @@ struct SolidSpec {
   int axis = 2;                    // 3D cylinder: the axis it runs along (through the whole domain)
   int layers = 3;
   bool container = false;          // walls outside the shape, the fluid inside (min/max: still the shape's)
+  // box: per axis, whether it spans a periodic axis of the domain end to end (a plate of a
+  // Couette flow): no faces across it, its particles' normals have no part along it.
+  std::vector<bool> endless;
   std::vector<double> velocity;    // prescribed, constant (a lid, a plate); the particles stay put
   // Prescribed motion: per axis a formula of t and the particle's rest position x, y, z (the
   // particles move; empty: none). *_where: the key's place, for errors.

@@ -1,10 +1,11 @@
 #pragma once
 // Generalised wall boundary condition (Adami, Hu & Adams 2012; seed 002 eqs. 27-28):
 // each wall particle takes the Shepard-weighted pressure of the fluid around it plus the
-// hydrostatic correction g . sum(rho_f (x_w - x_f) W), its density from the inverse equation of
-// state, and (when laminar viscosity is on) a ghost velocity 2 v_wall - v~ for no-slip, v_wall
-// being the wall particle's own velocity: zero for containers, a [[solid]]'s prescribed velocity
-// for a lid or a sliding plate (constant: no wall acceleration enters the pressure).
+// correction (g - a_w) . sum(rho_f (x_w - x_f) W), a_w the wall's prescribed acceleration (a
+// piston, a shaken tank; zero for walls at rest or sliding at a constant velocity), its density
+// from the inverse equation of state, and (when laminar viscosity is on) a ghost velocity
+// 2 v_wall - v~ for no-slip, v_wall being the wall particle's own velocity: zero for containers,
+// a [[solid]]'s prescribed velocity for a lid, a sliding plate or a moving body.
 #include "ecs/system.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
@@ -22,6 +23,7 @@ class AdamiWall final : public System<D> {
     a.read(components::position, components::velocity, components::kind, neighbours_resource)
         .write(components::pressure, components::density);
     if (p_.mu > 0) a.write(components::wall_velocity);
+    if (p_.wall_acceleration) a.read(components::body_acceleration);
     return a;
   }
   void run(SystemContext<D>& ctx) override {
@@ -33,6 +35,8 @@ class AdamiWall final : public System<D> {
     auto rho = ctx.write(components::density);
     std::span<Vec<D>> ghost;
     if (p_.mu > 0) ghost = ctx.write(components::wall_velocity);
+    std::span<const Vec<D>> acceleration;
+    if (p_.wall_acceleration) acceleration = ctx.read(components::body_acceleration);
     const bool periodic = p_.domain.any_periodic();
     for_each_of_kind(kind, kWall, [&](std::size_t w) {
       double sum_w = 0, sum_p = 0;
@@ -46,7 +50,8 @@ class AdamiWall final : public System<D> {
         sum_rho_r += rho[f] * r * W;
         sum_v += v[f] * W;
       }
-      double pw = sum_w > 0 ? (sum_p + p_.gravity.dot(sum_rho_r)) / sum_w : 0.0;
+      const Vec<D> felt = acceleration.empty() ? p_.gravity : Vec<D>(p_.gravity - acceleration[w]);
+      double pw = sum_w > 0 ? (sum_p + felt.dot(sum_rho_r)) / sum_w : 0.0;
       p[w] = pw;
       rho[w] = p_.density(pw);
       if (!ghost.empty()) ghost[w] = sum_w > 0 ? Vec<D>(2 * v[w] - sum_v / sum_w) : v[w];

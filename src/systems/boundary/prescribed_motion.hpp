@@ -2,8 +2,10 @@
 // Prescribed motion of [[solid]] bodies (a piston wave maker, a rotating paddle): at the start of
 // every step each particle of a moving body goes to its rest position plus the displacement
 // formula at the step's time, and takes the formula's time derivative (a central difference
-// over 2 microseconds) as its velocity, which the wall conditions use as the surface's; or the
-// tabulated displacement and its slope.
+// over 2 microseconds) as its velocity, which the wall conditions use as the surface's, and its
+// second derivative (over 0.2 ms: round-off ~1e-9 m/s^2 for centimetre strokes) as its
+// acceleration, which enters Adami's wall pressure; or the tabulated displacement, its slope and
+// the slope's change (scene/motion_table.hpp).
 #include <string>
 #include <vector>
 
@@ -26,7 +28,7 @@ class PrescribedMotion final : public System<D> {
   Access access() const override {
     Access a;
     a.read(components::kind, components::body, components::body_origin, resources::time)
-        .write(components::position, components::velocity);
+        .write(components::position, components::velocity, components::body_acceleration);
     return a;
   }
   void run(SystemContext<D>& ctx) override {
@@ -34,7 +36,8 @@ class PrescribedMotion final : public System<D> {
     auto origin = ctx.read(components::body_origin);
     auto x = ctx.write(components::position);
     auto v = ctx.write(components::velocity);
-    const double t = ctx.read(resources::time), h = 1e-6;
+    auto acceleration = ctx.write(components::body_acceleration);
+    const double t = ctx.read(resources::time), h = 1e-6, ha = 2e-4;
     for (std::size_t i = 0; i < body.size(); ++i) {
       if (body[i] < 0) continue;
       for (auto& b : bodies_) {
@@ -42,13 +45,16 @@ class PrescribedMotion final : public System<D> {
         const Vec<D>& o = origin[i];
         if (!b.table.empty()) {
           auto [shift, speed] = sample_motion(b.table, t);
-          for (int a = 0; a < D; ++a) x[i][a] = o[a] + shift[a], v[i][a] = speed[a];
+          const auto change = motion_acceleration(b.table, t);
+          for (int a = 0; a < D; ++a) x[i][a] = o[a] + shift[a], v[i][a] = speed[a], acceleration[i][a] = change[a];
           continue;
         }
         const double y = D > 1 ? o[1] : 0.0, z = D > 2 ? o[2] : 0.0;
         for (int a = 0; a < D; ++a) {
           x[i][a] = o[a] + b.formulas[a](o[0], y, z, t);
           v[i][a] = (b.formulas[a](o[0], y, z, t + h) - b.formulas[a](o[0], y, z, t - h)) / (2 * h);
+          acceleration[i][a] = (b.formulas[a](o[0], y, z, t + ha) - 2 * (x[i][a] - o[a]) +
+                                b.formulas[a](o[0], y, z, t - ha)) / (ha * ha);
         }
       }
     }

@@ -20,6 +20,7 @@ struct WcsphParameters {
   double beta = 0.0;   // artificial viscosity, quadratic term ("B")
   double mu = 0;       // dynamic viscosity, Pa s (0: no laminar viscosity system)
   bool wall_no_slip = true;
+  bool wall_acceleration = false;  // some body moves: Adami's wall pressure takes its acceleration
 
   // Tait stiffness B = rho0 c0^2 / gamma (seed 002 eq. 3 with p0 = B).
   double stiffness() const { return rho0 * c0 * c0 / gamma; }

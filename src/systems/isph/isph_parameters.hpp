@@ -14,8 +14,6 @@
 namespace ryushi {
 
 namespace components {
-// Unit normal of a wall particle, out of the fluid into the wall (ISPH's single wall layer).
-inline constexpr Component<Vector> wall_normal{"wall_normal"};
 // A fluid particle's Dirichlet pressure ([[fixed_pressure]], Eulerian channels); NaN where the
 // pressure is solved for. Only present when the scene has such boxes.
 inline constexpr Component<Scalar> fixed_pressure{"fixed_pressure"};

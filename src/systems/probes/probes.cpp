@@ -1,6 +1,8 @@
 #include "systems/probes/probes.hpp"
 
 #include "systems/probes/solid_force.hpp"
+#include "systems/operators/mps_reference.hpp"
+#include "systems/probes/solid_surface_force.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
@@ -67,8 +69,11 @@ double water_surface(const Vec<D>& base, const World<D>& world, const Kernel<D>&
 
 template <int D>
 std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const World<D>& world,
-                                  const Kernel<D>& kernel, double d, double rho0, const Domain<D>& domain,
-                                  const Vec<D>& gravity) {
+                                  const MethodContext<D>& context) {
+  const Kernel<D>& kernel = context.kernel;
+  const Domain<D>& domain = context.domain;
+  const double d = context.spacing, rho0 = context.rho0;
+  const Vec<D>& gravity = context.gravity;
   auto& x = world.column(components::position);
   auto& kind = world.column(components::kind);
   auto& p = world.column(components::pressure);
@@ -110,7 +115,16 @@ std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const Wo
       }, false);
       out.push_back(r.first);
     } else if (probe.type == "force") {
-      out.push_back(solid_force<D>(probe.solid, world, kernel, domain)[probe.axis]);
+      // WCSPH: the reaction to its pair forces; MPS, ISPH: the pressure on the first wall layer.
+      SurfaceForceParameters surface{d, rho0, context.viscosity, 0.0};
+      if (context.method == "mps") {
+        const auto ref = mps_reference(kernel, d);
+        surface.mps_viscous = context.viscosity / rho0 * 2.0 * D / (ref.lambda0 * ref.n0);
+      }
+      const Vec<D> force = context.method == "wcsph"
+                               ? solid_force<D>(probe.solid, world, kernel, domain)
+                               : solid_surface_force<D>(probe.solid, world, kernel, domain, gravity, surface);
+      out.push_back(force[probe.axis]);
     } else {  // water_height
       out.push_back(water_surface<D>(at, world, kernel, rho0, domain.max[D - 1], d));
     }
@@ -118,9 +132,9 @@ std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const Wo
   return out;
 }
 
-template std::vector<double> sample_probes<2>(const std::vector<ProbeSpec>&, const World<2>&, const Kernel<2>&,
-                                              double, double, const Domain<2>&, const Vec<2>&);
-template std::vector<double> sample_probes<3>(const std::vector<ProbeSpec>&, const World<3>&, const Kernel<3>&,
-                                              double, double, const Domain<3>&, const Vec<3>&);
+template std::vector<double> sample_probes<2>(const std::vector<ProbeSpec>&, const World<2>&,
+                                              const MethodContext<2>&);
+template std::vector<double> sample_probes<3>(const std::vector<ProbeSpec>&, const World<3>&,
+                                              const MethodContext<3>&);
 
 }  // namespace ryushi

@@ -18,9 +18,13 @@
 //   kinetic_energy    sum over fluid particles of m |v|^2 / 2 (J; J/m in 2D, per unit depth)
 //   potential_energy  sum over fluid particles of -m g . x (J; zero at the origin): with the
 //                     kinetic energy, the mechanical energy a sloshing tank may only lose
+//   force             a component of the fluid's force on a [[solid]]: WCSPH's pair-force
+//                     reaction (solid_force.hpp), else the surface pressure and wall shear
+//                     on the body's first layer (solid_surface_force.hpp)
 #include <vector>
 
 #include "ecs/world.hpp"
+#include "methods/method_context.hpp"
 #include "scene/scene.hpp"
 #include "systems/kernels/kernel.hpp"
 #include "systems/neighbour/domain.hpp"
@@ -29,7 +33,6 @@ namespace ryushi {
 
 template <int D>
 std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const World<D>& world,
-                                  const Kernel<D>& kernel, double spacing, double rho0, const Domain<D>& domain,
-                                  const Vec<D>& gravity);
+                                  const MethodContext<D>& context);
 
 }  // namespace ryushi
