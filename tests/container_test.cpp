@@ -140,6 +140,39 @@ TEST_CASE("container: water at rest in a round tank keeps rho g depth on average
   }
 }
 
+// ISPH asks for one wall layer with normals: around a round container a ring at R + d/2 with the
+// exact normals (on the lattice it would be a zigzag, which blew up), the fluid lattice cut a
+// quarter spacing inside the circle so that every wall particle has water within ISPH's wetted
+// distance (solid_shape.hpp, scene_particles.cpp). Its tank at rest is then as exact as its box
+// tank: measured at t = 2 s, relative L2 0.23% over the fluid, probes +0.04% / +0.04%, the force
+// on the tank over t = 1-2 s rho g pi R^2 / 2 to 0.005% (the 612 particles hold 2.6% less than
+// the half disc's area, the pressure integral over the wall sees the whole). Bounds: 0.5% (the
+// ISPH tank at rest in isph_test.cpp is asserted to 0.5% too), 1% on the force.
+TEST_CASE("container: water at rest in a round tank keeps rho g depth (ISPH, a ring wall)") {
+  auto dir = test::unique_scratch("container_round_isph");
+  test::write_text(dir / "tank.toml", test::read_text(test::scene_path("round_tank_2d.toml")) +
+                                          "\n[[probe]]\nname = \"fy\"\ntype = \"force\"\nsolid = \"tank\"\naxis = 1\n");
+  const auto out = dir / "out";
+  RunOptions opt;
+  opt.scene = (dir / "tank.toml").string();
+  opt.out_dir = out.string();
+  opt.quiet = true;
+  opt.sets = {"time.end=2", "method.name=isph", "output.probe_interval=0.01"};
+  REQUIRE(run_scene(opt) == kExitDone);
+  auto summary = test::read_text(out / "summary.json");
+  CHECK(test::json_number(summary, "hydrostatic") < 0.005);
+  auto probes = test::read_csv(out / "probes.csv");
+  const double rho_g = 1000 * 9.81;
+  CHECK(std::abs(probes["p_depth_0.25"].back() / (rho_g * 0.25) - 1) < 0.005);
+  CHECK(std::abs(probes["p_depth_0.40"].back() / (rho_g * 0.40) - 1) < 0.005);
+  double force = 0;
+  int samples = 0;
+  for (std::size_t k = 0; k < probes["time"].size(); ++k)
+    if (probes["time"][k] >= 1.0) force += probes["fy"][k], ++samples;
+  REQUIRE(samples >= 90);
+  CHECK(std::abs(-force / samples / (rho_g * kPi * 0.5 * 0.5 / 2) - 1) < 0.01);
+}
+
 TEST_CASE("container: bad containers are bad input naming the solid and the problem") {
   const std::string base =
       "[scene]\ndimension = 2\n[domain]\nmin = [-0.2, -0.2]\nmax = [1.2, 1.2]\n[particles]\nspacing = 0.025\n"
@@ -152,10 +185,15 @@ TEST_CASE("container: bad containers are bad input naming the solid and the prob
   CHECK(test::scene_error(base + tank + "[[solid]]\nshape = \"box\"\nmin = [0.8, 0.1]\nmax = [0.95, 0.3]\n") ==
         "bad.toml:20:9: [[solid]] #1 lies (partly) outside container 'tank' (bodies must lie inside a "
         "container, clear of its wall)");
-  CHECK(test::scene_error(base + "[method]\nname = \"isph\"\n" + tank) ==
-        "bad.toml:20:13: [[solid]] #0 is a round container, for methods wcsph and mps: method isph's one wall "
-        "layer, laid on the fluid's lattice around a curve, is a zigzag its wall rows do not hold (a round "
-        "tank at rest blew up at t = 0.6 s)");
+  CHECK(test::scene_error(base + "[method]\nname = \"isph\"\n" + tank) == "");  // a ring in 2D
+  const std::string base3 =
+      "[scene]\ndimension = 3\n[domain]\nmin = [-0.1, -0.1, -0.1]\nmax = [0.5, 0.5, 0.5]\n[particles]\n"
+      "spacing = 0.025\n[method]\nname = \"isph\"\n[time]\nend = 0.1\n[[fluid]]\nmin = [0.0, 0.0, 0.0]\n"
+      "max = [0.4, 0.4, 0.2]\n";
+  CHECK(test::scene_error(base3 + "[[solid]]\nshape = \"sphere\"\ncentre = [0.2, 0.2, 0.2]\nradius = 0.2\n"
+                                  "container = true\n") ==
+        "bad.toml:19:13: [[solid]] #0 is a 3D round or mesh container, for methods wcsph and mps: method isph's "
+        "one wall layer there is not stable yet (a half-full ball at rest, R / d = 8, blew up at t = 0.36 s)");
   // A body inside is fine, and cuts its own hole in the fluid.
   CHECK(test::scene_error(base + tank + "[[solid]]\nshape = \"box\"\nmin = [0.4, 0.1]\nmax = [0.6, 0.3]\n") == "");
 }

@@ -58,3 +58,5 @@ set_tests_properties("solid: MPS and ISPH read the sliding plate's drag from the
                      PROPERTIES LABELS slow COST 14)
 set_tests_properties("container: a tank accelerating upwards is the tank at rest under g + a (WCSPH wall acceleration)"
                      PROPERTIES LABELS slow COST 10)
+set_tests_properties("container: water at rest in a round tank keeps rho g depth (ISPH, a ring wall)"
+                     PROPERTIES LABELS slow COST 9)

@@ -76,6 +76,8 @@ bool SolidShape<D>::within(const Vec<D>& x, double margin) const {
 
 template <int D>
 std::vector<ShellParticle<D>> SolidShape<D>::shell(double d, const Vec<D>* lattice_origin) const {
+  // A round container asked for without a lattice: rings outside it (ISPH's single layer).
+  if (spec_.container && !lattice_origin && !mesh_ && spec_.shape != "box") return round_shell(d);
   if (spec_.container) return container_shell(d, lattice_origin ? *lattice_origin : lo_);
   if (mesh_) return mesh_shell(d);
   return spec_.shape == "box" ? box_shell(d) : round_shell(d);
@@ -155,7 +157,9 @@ std::vector<ShellParticle<D>> SolidShape<D>::box_shell(double d) const {
 // t = 0.4 s), and fluid laid on rings instead left a jagged surface that ISPH did not survive.
 template <int D>
 std::vector<ShellParticle<D>> SolidShape<D>::container_shell(double d, const Vec<D>& origin) const {
-  const auto [outer_lo, outer_hi] = extent(d);
+  const auto outer = extent(d);  // not a structured binding: clang does not capture those
+  const Vec<D>& outer_lo = outer.first;
+  const Vec<D>& outer_hi = outer.second;
   std::array<long, D> from{}, to{};
   for (int a = 0; a < D; ++a) {
     from[a] = static_cast<long>(std::floor((outer_lo[a] - origin[a]) / d)) - 1;
@@ -196,12 +200,13 @@ std::vector<ShellParticle<D>> SolidShape<D>::container_shell(double d, const Vec
 
 // Rings (2D disc, 3D cylinder: rings on the lattice along the axis) or shells (sphere) at the
 // depths (k - 1/2) d, k = 1..layers, with points about d apart: every layer-1 particle is half a
-// spacing inside the surface and has the exact radial normal.
+// spacing inside the surface (a container's: outside it) and has the exact radial normal.
 template <int D>
 std::vector<ShellParticle<D>> SolidShape<D>::round_shell(double d) const {
   std::vector<ShellParticle<D>> out;
+  const double inward = spec_.container ? -1.0 : 1.0;  // a container's rings lie outside it
   for (int k = 1; k <= spec_.layers; ++k) {
-    const double r = spec_.radius - (k - 0.5) * d;
+    const double r = spec_.radius - inward * (k - 0.5) * d;
     if (r < 0.25 * d) {  // the middle: one particle, if there is room
       if (r > -0.25 * d) out.push_back({centre_, k, Vec<D>::UnitX()});
       break;
@@ -211,7 +216,7 @@ std::vector<ShellParticle<D>> SolidShape<D>::round_shell(double d) const {
     if constexpr (D == 2) {
       for (auto [cx, cy] : ring(r, d, phase)) {
         Vec<D> offset(cx, cy);
-        out.push_back({centre_ + offset, k, Vec<D>(-offset / r)});
+        out.push_back({centre_ + offset, k, Vec<D>(-inward * offset / r)});
       }
     } else if (spec_.shape == "cylinder") {
       const int a0 = (spec_.axis + 1) % 3, a1 = (spec_.axis + 2) % 3;
@@ -222,7 +227,7 @@ std::vector<ShellParticle<D>> SolidShape<D>::round_shell(double d) const {
           offset[a0] = cx, offset[a1] = cy;
           Vec<D> x = centre_ + offset;
           x[spec_.axis] = lo_[spec_.axis] + (s + 0.5) * d;
-          out.push_back({x, k, Vec<D>(-offset / r)});
+          out.push_back({x, k, Vec<D>(-inward * offset / r)});
         }
     } else {  // sphere: a Fibonacci lattice, 4 pi r^2 / d^2 points
       const int n = std::max(1, static_cast<int>(std::lround(4 * std::numbers::pi * r * r / (d * d))));
@@ -231,7 +236,7 @@ std::vector<ShellParticle<D>> SolidShape<D>::round_shell(double d) const {
         const double z = 1 - 2 * (j + 0.5) / n, rho = std::sqrt(1 - z * z), angle = golden * j + phase;
         Vec<D> unit = Vec<D>::Zero();
         unit[0] = rho * std::cos(angle), unit[1] = rho * std::sin(angle), unit[2] = z;
-        out.push_back({centre_ + r * unit, k, Vec<D>(-unit)});
+        out.push_back({centre_ + r * unit, k, Vec<D>(-inward * unit)});
       }
     }
     if (k == 1 && out.size() > ring_start) {  // the surface at the radius, shared by the ring's points

@@ -38,7 +38,8 @@ class SolidShape {
   // the signed distance for a mesh: the bounding box first, the inside test, then the distance.
   bool within(const Vec<D>& x, double margin) const;
   // The particles of the outer `layers` at spacing d; a container's lie outside it, on the lattice
-  // lattice_origin + (k + 1/2) d (the fluid's; default its lower corner).
+  // lattice_origin + (k + 1/2) d (the fluid's), or without one, a round container's on rings
+  // (shells) at (k - 1/2) d outside it (a box's and a mesh's on the lattice from its corner).
   std::vector<ShellParticle<D>> shell(double d, const Vec<D>* lattice_origin = nullptr) const;
   // The box the particles of `layers` at spacing d occupy (a container's reaches beyond the shape;
   // a 3D cylinder's runs along its axis as the shape's does).
