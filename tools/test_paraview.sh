@@ -47,7 +47,10 @@ made=$("$ryushi" check scenes/dam_break_sphere_3d.toml --write-initial "$work/st
 xvfb-run -a -s "-screen 0 1024x768x24" pvpython tools/paraview_check.py "$work/stl_initial" \
   --expect-points "$made" --expect-times 0 --image-dir "$images" --label stl_initial --arrays kind,body \
   2> >(grep -v -e '^$' -e 'vtkXOpenGLRenderWindow' -e 'GLX' >&2)
-echo "test-paraview: 5 particle sets x 4 readers passed; screenshots in $images"
+# A round container (its walls on the fluid's lattice outside the circle) with the force on it.
+"$ryushi" run scenes/round_tank_2d.toml --out "$work/round_tank" --quiet --end-time 0.1 --set output.interval=0.05
+check round_tank "$work/round_tank" 0,0.05,0.1
+echo "test-paraview: 6 particle sets x 4 readers passed; screenshots in $images"
 
 # Pictures without ParaView: every frame and a movie, a 3D slice, and a clean refusal.
 "$ryushi" render "$work/wcsph" --movie >/dev/null
