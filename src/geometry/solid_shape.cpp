@@ -153,8 +153,9 @@ std::vector<ShellParticle<D>> SolidShape<D>::box_shell(double d) const {
 // and the wall partition it: no gap for the fluid to sink into. Rings at (k - 1/2) d, as a round
 // body has, left voids of up to 0.7 d between them and the lattice; WCSPH's continuity read the
 // fluid sinking into them as compression that stayed (a round tank 20% over hydrostatic at the
-// bottom after 3 s), ISPH's wall particles across them saw no water and took p = 0 (blown up at
-// t = 0.4 s), and fluid laid on rings instead left a jagged surface that ISPH did not survive.
+// bottom after 3 s), and fluid laid on rings instead left a jagged surface. ISPH's single layer
+// needs exact normals and takes the rings after all, with the fluid cut closer to them
+// (scene_particles.cpp).
 template <int D>
 std::vector<ShellParticle<D>> SolidShape<D>::container_shell(double d, const Vec<D>& origin) const {
   const auto outer = extent(d);  // not a structured binding: clang does not capture those
