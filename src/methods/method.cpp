@@ -51,7 +51,7 @@ MethodSetup<D> build_method(const Scene& s, World<D>& world, const PipelineOptio
   // Bodies with a prescribed motion move first in the step, before the neighbour search sees them.
   std::vector<typename PrescribedMotion<D>::Body> moving;
   for (std::size_t k = 0; k < s.solids.size(); ++k) {
-    if (s.solids[k].displacement.empty() && s.solids[k].displacement_table.empty()) continue;
+    if (!s.solids[k].moves()) continue;
     typename PrescribedMotion<D>::Body body{static_cast<int>(k), {}, s.solids[k].displacement_table};
     for (auto& formula : s.solids[k].displacement) body.formulas.emplace_back(formula);
     moving.push_back(std::move(body));

@@ -91,7 +91,7 @@ SceneParticles<D> append_scene_particles(
   }
   std::span<Vec<D>> origin;
   if (std::any_of(s.solids.begin(), s.solids.end(),
-                  [](auto& b) { return !b.displacement.empty() || !b.displacement_table.empty(); })) {
+                  [](const SolidSpec& b) { return b.moves(); })) {
     origin = world.ensure(components::body_origin);
     world.ensure(components::body_acceleration);  // zero until the motion sets it
   }

@@ -40,9 +40,7 @@ WcsphParameters<D> wcsph_parameters(const Scene& s) {
   p.beta = s.beta;
   p.mu = s.viscosity;
   p.wall_no_slip = !s.wall_slip;
-  p.wall_acceleration = std::any_of(s.solids.begin(), s.solids.end(), [](const SolidSpec& b) {
-    return !b.displacement.empty() || !b.displacement_table.empty();
-  });
+  p.wall_acceleration = std::any_of(s.solids.begin(), s.solids.end(), [](const SolidSpec& b) { return b.moves(); });
   return p;
 }
 

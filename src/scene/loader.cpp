@@ -665,6 +665,10 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   }
   if (sc.fluid.empty() && sc.imports.empty())
     val.fail(root["fluid"].node(), "fluid", "the scene has no [[fluid]] block and no [[import]]");
+  // MPS: the wall layers a pressure-solved first layer needs behind it for a complete number
+  // density (its dummy particles), for [[wall]] and [[solid]] alike.
+  const int mps_layers =
+      sc.wall_pressure_layers + static_cast<int>(std::floor(sc.support_radius() / sc.spacing + 1e-9));
   if (auto* arr = root["wall"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
       // ISPH walls are one layer of particles with normals (ISPH paper section 4).
@@ -697,11 +701,10 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
           << sc.support_radius() << " m; use layers >= " << covering;
         val.fail(root["wall"][i]["layers"].node() ? root["wall"][i]["layers"].node() : &(*arr)[i], path_of("wall", i, "layers"), m.str());
       }
-      const int reach = static_cast<int>(std::floor(sc.support_radius() / sc.spacing + 1e-9));
-      if (mps && w.layers < sc.wall_pressure_layers + reach) {
+      if (mps && w.layers < mps_layers) {
         std::ostringstream m;
         m << "[[wall]] #" << i << ": " << w.layers << " layers leave the innermost wall particles short of dummy particles; method mps needs layers >= wall_pressure_layers + floor(r_e / spacing) = "
-          << sc.wall_pressure_layers + reach;
+          << mps_layers;
         val.fail(root["wall"][i]["layers"].node() ? root["wall"][i]["layers"].node() : &(*arr)[i], path_of("wall", i, "layers"), m.str());
       }
       sc.walls.push_back(std::move(w));
@@ -817,8 +820,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
         // MPS's pressure-solved first layer needs its dummy layers behind it (a complete number
         // density), as for [[wall]]: a paddle two spacings thick read 63% of the hydrostatic
         // thrust, its wall particles flagged as free surface.
-        const int reach = static_cast<int>(std::floor(sc.support_radius() / sc.spacing + 1e-9));
-        const int needed = sc.wall_pressure_layers + reach;
+        const int needed = mps_layers;
         need(b.layers >= needed, "layers",
              "has " + std::to_string(b.layers) + " layers; method mps needs layers >= wall_pressure_layers + floor(r_e / spacing) = " +
                  std::to_string(needed));

@@ -75,6 +75,7 @@ struct SolidSpec {
   std::vector<std::string> displacement;
   std::string displacement_where;
   std::vector<MotionSample> displacement_table;  // or tabulated (scene/motion_table.hpp)
+  bool moves() const { return !displacement.empty() || !displacement_table.empty(); }  // its particles
 };
 // Fluid particles inside [min, max] at the start hold p = pressure + gradient . x (Dirichlet):
 // the inlet and outlet of an Eulerian ISPH channel.
