@@ -84,6 +84,11 @@ TEST_CASE("energy: a WCSPH sloshing tank never gains energy and keeps the linear
   check_sloshing_energy("wcsph");
 }
 
+// Seed 001's leapfrog (one force evaluation per step) under the same physics.
+TEST_CASE("energy: a WCSPH sloshing tank with the leapfrog integrator never gains energy and keeps the linear period") {
+  check_sloshing_energy("wcsph", {"method.integrator=leapfrog"});
+}
+
 TEST_CASE("energy: an MPS sloshing tank never gains energy (known to fail: MPS gains 69% of it)" *
           doctest::should_fail()) {
   check_sloshing_energy("mps");

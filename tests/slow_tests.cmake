@@ -60,3 +60,15 @@ set_tests_properties("container: a tank accelerating upwards is the tank at rest
                      PROPERTIES LABELS slow COST 10)
 set_tests_properties("container: water at rest in a round tank keeps rho g depth (ISPH, a ring wall)"
                      PROPERTIES LABELS slow COST 9)
+set_tests_properties("rheology: power-law Poiseuille flows (n = 0.5 and 1.5) reach their analytic steady profiles within 2%"
+                     PROPERTIES LABELS slow COST 22)
+set_tests_properties("rheology: a Bingham Poiseuille flow reaches the analytic plug profile within 2%"
+                     PROPERTIES LABELS slow COST 18)
+set_tests_properties("heat: a hot fluid cooling on a cold plate follows the Arrhenius law particle by particle and slows"
+                     PROPERTIES LABELS slow COST 12)
+set_tests_properties("heat: a heat-flux wall and a fixed-temperature plate follow their series to the steady slope q/k"
+                     PROPERTIES LABELS slow COST 10)
+set_tests_properties("leapfrog: one force evaluation per step, the dam-break criterion and the same front as the midpoint"
+                     PROPERTIES LABELS slow COST 12)
+set_tests_properties("energy: a WCSPH sloshing tank with the leapfrog integrator never gains energy and keeps the linear period"
+                     PROPERTIES LABELS slow COST 14)

@@ -5,6 +5,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -192,6 +193,9 @@ class Runner {
     res_.ensure(resources::step) = 0;
     scheduler_ = std::make_unique<Scheduler<D>>(std::move(method.pipeline), world_, res_, profiler_);
     scheduler_->initialise();
+    frame_fields_ = scene_.output_fields;
+    for (auto& f : method.frame_fields)
+      if (std::find(frame_fields_.begin(), frame_fields_.end(), f) == frame_fields_.end()) frame_fields_.push_back(f);
     for (auto& f : scene_.output_fields)
       if (!world_.has(f)) {
         std::string list;
@@ -453,7 +457,7 @@ class Runner {
     Profiler::Scope t(profiler_, slot_output_);
     char name[64];
     std::snprintf(name, sizeof name, "frames/frame_%05zu.h5", frames_.size());
-    auto fields = write_frame<D>(out_ / name, world_, scene_.output_fields, time_, step_);
+    auto fields = write_frame<D>(out_ / name, world_, frame_fields_, time_, step_);
     frames_.push_back({name, time_, world_.size(), fields});
     write_text_atomic(out_ / "particles.xdmf", xdmf_document(frames_));
     if (!scene_.probes.empty()) write_text_atomic(out_ / "probes.csv", probes_csv(scene_.probes, probe_rows_));
@@ -571,6 +575,7 @@ class Runner {
   Resources res_;
   std::unique_ptr<Scheduler<D>> scheduler_;
   std::string method_summary_;
+  std::vector<std::string> frame_fields_;  // [output] fields and what the method adds (temperature, ...)
   bool density_may_vanish_ = false;
   fs::path out_;
   std::vector<FrameRecord> frames_;

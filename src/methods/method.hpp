@@ -39,6 +39,9 @@ struct MethodSetup {
   // MPS density is rho0 n*/n0, a diagnostic: an isolated splash particle has n* = 0. WCSPH
   // divides by density, so there zero is a failure.
   bool density_may_vanish = false;
+  // Per-particle fields its physics makes worth seeing, written to every frame besides the
+  // default ones and [output] fields (temperature, the apparent viscosity).
+  std::vector<std::string> frame_fields;
 };
 
 template <int D>

@@ -75,6 +75,7 @@ SceneParticles<D> scene_particles(const Scene& s) {
                                                    : std::numeric_limits<double>::quiet_NaN());
       if constexpr (D == 2) u += b.angular_velocity * Vec<D>(x[1] - centre[1], -(x[0] - centre[0]));
       out.fluid_velocity.push_back(u);
+      out.fluid_temperature.push_back(std::isnan(b.temperature) ? s.temperature : b.temperature);
     });
   }
   // [[import]]: as read; without a pressure the depth below the highest imported particle's top.
@@ -91,9 +92,11 @@ SceneParticles<D> scene_particles(const Scene& s) {
       out.depth.push_back(top - x[D - 1]);
       out.fluid_velocity.push_back(u);
       out.pressure.push_back(in.pressure.empty() ? std::numeric_limits<double>::quiet_NaN() : in.pressure[k]);
+      out.fluid_temperature.push_back(s.temperature);
     }
   }
-  for (auto& w : s.walls) {
+  for (std::size_t box = 0; box < s.walls.size(); ++box) {
+    const WallBox& w = s.walls[box];
     Vec<D> lo = scene_vector<D>(w.min), hi = scene_vector<D>(w.max);
     std::array<long, D> from{}, to{};
     for (int a = 0; a < D; ++a) {
@@ -114,6 +117,7 @@ SceneParticles<D> scene_particles(const Scene& s) {
       out.wall_normal.push_back(normal.normalized());
       out.wall_velocity.push_back(Vec<D>::Zero());
       out.wall_body.push_back(-1);
+      out.wall_box.push_back(static_cast<int>(box));
       out.wall_area.push_back(0.0);
     });
   }
@@ -125,6 +129,7 @@ SceneParticles<D> scene_particles(const Scene& s) {
       out.wall_normal.push_back(particle.normal);
       out.wall_velocity.push_back(velocity);
       out.wall_body.push_back(static_cast<int>(k));
+      out.wall_box.push_back(-1);
       out.wall_area.push_back(particle.area);
     }
   }

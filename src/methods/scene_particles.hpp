@@ -25,6 +25,7 @@ struct SceneParticles {
   std::vector<double> depth;
   std::vector<Vec<D>> fluid_velocity;  // the block's initial velocity and rotation
   std::vector<double> pressure;        // the block's initial pressure; NaN: the method's own start
+  std::vector<double> fluid_temperature;  // the block's (or [material]) temperature; NaN: no heat
   std::vector<Vec<D>> wall;
   std::vector<int> wall_layer;
   // Unit normal out of the fluid into the wall: along the axes on which the particle lies
@@ -32,6 +33,7 @@ struct SceneParticles {
   std::vector<Vec<D>> wall_normal;
   std::vector<Vec<D>> wall_velocity;  // a [[solid]]'s prescribed velocity; zero for containers
   std::vector<int> wall_body;         // the [[solid]]'s index; -1 for containers
+  std::vector<int> wall_box;          // the [[wall]]'s index; -1 for solids
   std::vector<double> wall_area;      // a body's first layer: the surface each stands for (else 0)
 };
 
@@ -53,7 +55,7 @@ SceneParticles<D> append_scene_particles(
   {  // only the kept wall layers
     SceneParticles<D> kept = particles;
     kept.wall.clear(), kept.wall_layer.clear(), kept.wall_normal.clear();
-    kept.wall_velocity.clear(), kept.wall_body.clear(), kept.wall_area.clear();
+    kept.wall_velocity.clear(), kept.wall_body.clear(), kept.wall_box.clear(), kept.wall_area.clear();
     for (std::size_t k = 0; k < particles.wall.size(); ++k)
       if (keep_layer(particles.wall_layer[k])) {
         kept.wall.push_back(particles.wall[k]);
@@ -61,6 +63,7 @@ SceneParticles<D> append_scene_particles(
         kept.wall_normal.push_back(particles.wall_normal[k]);
         kept.wall_velocity.push_back(particles.wall_velocity[k]);
         kept.wall_body.push_back(particles.wall_body[k]);
+        kept.wall_box.push_back(particles.wall_box[k]);
         kept.wall_area.push_back(particles.wall_area[k]);
       }
     particles = std::move(kept);

@@ -10,11 +10,17 @@
 #include "methods/method.hpp"
 
 #include "methods/scene_particles.hpp"
+#include "methods/thermal_state.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
 #include "systems/boundary/adami_wall.hpp"
 #include "systems/fluid/renormalised_density_gradient.hpp"
 #include "systems/fluid/tait_equation_of_state.hpp"
 #include "systems/fluid/wcsph_pair_forces.hpp"
+#include "systems/heat/heat_conduction.hpp"
+#include "systems/heat/temperature_midpoint.hpp"
+#include "systems/rheology/apparent_viscosity.hpp"
+#include "systems/fluid/xsph_velocity_smoothing.hpp"
+#include "systems/integrate/leapfrog.hpp"
 #include "systems/integrate/midpoint.hpp"
 #include "systems/integrate/time_step.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
@@ -41,7 +47,21 @@ WcsphParameters<D> wcsph_parameters(const Scene& s) {
   p.mu = s.viscosity;
   p.wall_no_slip = !s.wall_slip;
   p.wall_acceleration = std::any_of(s.solids.begin(), s.solids.end(), [](const SolidSpec& b) { return b.moves(); });
+  p.variable_viscosity = s.rheology.shear_dependent() || s.rheology.temperature_dependent();
   return p;
+}
+
+// A rheology model's first step: the largest viscosity at rest over the starting temperatures
+// (later steps take the largest of the column).
+template <int D>
+double viscosity_at_rest(const Scene& s, const World<D>& world) {
+  if (!s.rheology.temperature_dependent()) return s.rheology.apparent(0.0, 0.0);
+  const auto& T = world.column(components::temperature);
+  const auto& kind = world.column(components::kind);
+  double mu = 0;
+  for (std::size_t i = 0; i < T.size(); ++i)
+    if (kind[i] == kFluid) mu = std::max(mu, s.rheology.apparent(0.0, T[i]));
+  return mu;
 }
 
 // Fluid blocks at rest (hydrostatic density and pressure) and Adami wall containers.
@@ -50,13 +70,14 @@ void populate_world(const Scene& s, const WcsphParameters<D>& p, World<D>& world
   const double g_up = -p.gravity[D - 1];  // gravity along the vertical (last) axis
   // Hydrostatic start: the density that the equation of state maps to rho0 g depth, so the
   // column starts in equilibrium (mass = that compressed density times d^D).
-  append_scene_particles<D>(
+  auto appended = append_scene_particles<D>(
       s, p.rho0, world,
       [&](double depth, double given) {
         double rho = p.density(!std::isnan(given) ? given : s.hydrostatic_init ? p.rho0 * g_up * depth : 0.0);
         return std::pair{rho, p.pressure(rho)};
       },
       [](int) { return kWall; });
+  if (s.models_heat()) add_thermal_state<D>(s, appended, world);
 }
 
 template <int D>
@@ -66,19 +87,40 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
   auto gradient = std::make_shared<RenormalisedDensityGradient<D>>(p);
   auto forces = std::make_shared<WcsphPairForces<D>>(p);
   auto eos = std::make_shared<TaitEquationOfState<D>>(p);
+  const bool walls = !s.walls.empty() || !s.solids.empty();
+  // Multiphysics (docs/multiphysics.md): only a scene that models them pays for these systems.
+  SystemPtr<D> rheology, conduction;
+  if (p.variable_viscosity)
+    rheology = std::make_shared<ApparentViscosity<D>>(
+        ApparentViscosityParameters<D>{p.kernel, p.domain, s.rheology, p.wall_no_slip, walls});
+  const bool heat = s.conductivity > 0;
+  if (heat) conduction = std::make_shared<HeatConduction<D>>(heat_parameters<D>(s, p.kernel, p.domain));
 
   std::vector<SystemPtr<D>> list{neighbours};
   auto stage = [&] {
-    if (!s.walls.empty() || !s.solids.empty()) list.push_back(wall);
+    if (walls) list.push_back(wall);
     if (p.delta > 0) list.push_back(gradient);
+    if (rheology) list.push_back(rheology);
     list.push_back(forces);
+    if (conduction) list.push_back(conduction);
   };
-  stage();
-  list.push_back(std::make_shared<MidpointPredictor<D>>());
-  list.push_back(eos);
-  stage();
-  list.push_back(std::make_shared<MidpointCorrector<D>>());
-  list.push_back(eos);
+  const bool leapfrog = s.integrator == "leapfrog";
+  if (leapfrog) {  // one force evaluation per step (seed 001 eqs. 15-17)
+    stage();
+    list.push_back(std::make_shared<LeapfrogIntegrator<D>>(heat));
+    list.push_back(eos);
+  } else {
+    stage();
+    list.push_back(std::make_shared<MidpointPredictor<D>>());
+    if (heat) list.push_back(std::make_shared<TemperaturePredictor<D>>());
+    list.push_back(eos);
+    stage();
+    list.push_back(std::make_shared<MidpointCorrector<D>>());
+    if (heat) list.push_back(std::make_shared<TemperatureCorrector<D>>());
+    list.push_back(eos);
+  }
+  if (s.velocity_smoothing > 0)
+    list.push_back(std::make_shared<XsphVelocitySmoothing<D>>(p.kernel, p.domain, s.velocity_smoothing, leapfrog));
   if (s.shifting_model == "xsph") {
     list.push_back(std::make_shared<XsphShifting<D>>(
         XsphShiftingParameters<D>{p.kernel, p.domain, p.spacing, s.xsph_epsilon, s.max_shift}));
@@ -91,7 +133,9 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
     list.push_back(std::make_shared<FickianShifting<D>>(FickianShiftingParameters<D>{
         p.kernel, p.domain, p.spacing, s.fickian_coefficient, s.anti_clumping, s.max_shift, false}));
   }
-  if (s.fixed_dt <= 0) list.push_back(std::make_shared<TimeStepControl<D>>(p, s.cfl));
+  const double thermal_limit = heat ? heat_parameters<D>(s, p.kernel, p.domain).step_limit(p.rho0) : 0.0;
+  if (s.fixed_dt <= 0)
+    list.push_back(std::make_shared<TimeStepControl<D>>(p, s.cfl, thermal_limit, s.step_rule == "seed001"));
   return list;
 }
 
@@ -100,10 +144,14 @@ MethodSetup<D> build_wcsph(const Scene& s, World<D>& world, const PipelineOption
   refuse_matrix_dump(s, options);
   auto p = wcsph_parameters<D>(s);
   populate_world<D>(s, p, world);
+  if (p.variable_viscosity) p.mu = viscosity_at_rest<D>(s, world);
   MethodSetup<D> m;
   m.context = method_context<D>(s, p.kernel);
   m.pipeline = wcsph_pipeline<D>(s, p);
-  m.first_dt = TimeStepControl<D>(p, s.cfl).limit(0.0, p.gravity.norm());
+  const double thermal_limit = s.conductivity > 0 ? heat_parameters<D>(s, p.kernel, p.domain).step_limit(p.rho0) : 0.0;
+  m.first_dt = TimeStepControl<D>(p, s.cfl, thermal_limit, s.step_rule == "seed001").limit(0.0, p.gravity.norm());
+  if (s.models_heat()) m.frame_fields.push_back("temperature");
+  if (p.variable_viscosity) m.frame_fields.insert(m.frame_fields.end(), {"viscosity", "shear_rate"});
   char b[96];
   std::snprintf(b, sizeof b, "h = %.4g m, c0 = %.4g m/s", p.kernel.h(), p.c0);
   m.summary = b;

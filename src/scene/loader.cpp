@@ -11,10 +11,12 @@
 #include "methods/system_registry.hpp"
 #include "geometry/solid_shape.hpp"
 #include "scene/expression.hpp"
+#include "scene/load_heat_rheology.hpp"
 #include "scene/particle_import.hpp"
 #include "scene/overlaps.hpp"
 #include "scene/scene.hpp"
 #include "scene/schema.hpp"
+#include "scene/validator.hpp"
 #include "systems/kernels/kernel.hpp"
 #include "metrics/metrics.hpp"
 
@@ -46,161 +48,6 @@ double Scene::resolved_sound_speed() const {
 
 namespace {
 
-// Validation state: the file, the parsed tree and where each overridden key came from.
-class Validator {
- public:
-  Validator(std::string path, toml::table& root) : path_(std::move(path)), root_(root) {}
-
-  std::map<std::string, std::string> overridden;  // "section.key" -> "--set section.key=value"
-
-  [[noreturn]] void fail(const toml::node* node, const std::string& where_path, const std::string& msg) const {
-    fail_at(node ? &node->source() : nullptr, where_path, msg);
-  }
-  [[noreturn]] void fail_at(const toml::source_region* src, const std::string& where_path, const std::string& msg) const {
-    throw SceneError(location_at(src, where_path) + ": " + msg);
-  }
-  // "file:line:column" of a key, or the `--set` that gave it.
-  std::string location(const toml::node* node, const std::string& where_path) const {
-    return location_at(node ? &node->source() : nullptr, where_path);
-  }
-  std::string location_at(const toml::source_region* src, const std::string& where_path) const {
-    auto o = overridden.find(where_path);
-    if (o != overridden.end()) return o->second;
-    std::ostringstream out;
-    out << path_;
-    if (src && src->begin) out << ":" << src->begin.line << ":" << src->begin.column;
-    return out.str();
-  }
-
-  int dimension = 2;
-
-  void check_table(toml::table& table, const std::string& label, const std::string& path_prefix,
-                   const std::vector<KeySpec>& keys, const toml::node* table_node) {
-    std::vector<std::string> names;
-    for (auto& k : keys) names.push_back(k.key);
-    for (auto& [k, node] : table) {
-      std::string key(k.str());
-      const KeySpec* spec = find_key(keys, key);
-      if (!spec) {
-        std::string hint = closest_name(key, names);
-        fail_at(&k.source(), path_prefix + key,
-             "unknown key '" + key + "' in " + label + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
-      }
-      check_value(node, *spec, label, path_prefix + key);
-    }
-    for (auto& k : keys) {
-      if (table.contains(k.key)) continue;
-      if (k.required) fail(table_node, path_prefix + k.key, label + " is missing required key '" + k.key + "'");
-      if (!k.default_value.empty() && k.default_value.front() != '(') {
-        auto parsed = toml::parse("v = " + k.default_value);
-        table.insert(k.key, *parsed["v"].node());
-      }
-    }
-  }
-
-  void check_value(toml::node& node, const KeySpec& spec, const std::string& label, const std::string& path) {
-    auto bad_type = [&] {
-      fail(&node, path, "'" + spec.key + "' in " + label + " must be " + type_name(spec.type));
-    };
-    auto check_range = [&](double v) {
-      if (!std::isfinite(v)) fail(&node, path, "'" + spec.key + "' in " + label + " must be finite");
-      bool low = spec.min && (spec.min_exclusive ? v <= *spec.min : v < *spec.min);
-      bool high = spec.max && v > *spec.max;
-      if (low || high) {
-        std::ostringstream m;
-        m << "'" << spec.key << "' in " << label << " is " << v << "; it must be";
-        if (spec.min) m << (spec.min_exclusive ? " > " : " >= ") << *spec.min;
-        if (spec.min && spec.max) m << " and";
-        if (spec.max) m << " <= " << *spec.max;
-        fail(&node, path, m.str());
-      }
-    };
-    auto per_axis_array = [&] {  // an array with one entry per axis
-      auto* arr = node.as_array();
-      if (!arr) bad_type();
-      if (static_cast<int>(arr->size()) != dimension)
-        fail(&node, path, "'" + spec.key + "' in " + label + " has " + std::to_string(arr->size()) +
-                              " values; the scene is " + std::to_string(dimension) + "D");
-      return arr;
-    };
-    switch (spec.type) {
-      case KeyType::Integer:
-        if (!node.is_integer()) bad_type();
-        check_range(static_cast<double>(*node.value<long long>()));
-        break;
-      case KeyType::Float:
-        if (!node.is_number()) bad_type();
-        check_range(*node.value<double>());
-        break;
-      case KeyType::Bool:
-        if (!node.is_boolean()) bad_type();
-        break;
-      case KeyType::String: {
-        if (!node.is_string()) bad_type();
-        std::string v = *node.value<std::string>();
-        if (!spec.choices.empty() && std::find(spec.choices.begin(), spec.choices.end(), v) == spec.choices.end()) {
-          std::string list;
-          for (auto& c : spec.choices) list += (list.empty() ? "" : ", ") + c;
-          std::string hint = closest_name(v, spec.choices);
-          fail(&node, path, "'" + spec.key + "' in " + label + " is '" + v + "'; allowed: " + list +
-                                (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
-        }
-        break;
-      }
-      case KeyType::Vector:
-      case KeyType::BoolVector: {
-        auto* arr = per_axis_array();
-        for (auto& e : *arr) {
-          if (spec.type == KeyType::Vector) {
-            if (!e.is_number()) bad_type();
-            if (!std::isfinite(*e.value<double>()))
-              fail(&e, path, "'" + spec.key + "' in " + label + " must be finite");
-          } else if (!e.is_boolean()) {
-            bad_type();
-          }
-        }
-        break;
-      }
-      case KeyType::StringList: {
-        auto* arr = node.as_array();
-        if (!arr) bad_type();
-        for (auto& e : *arr)
-          if (!e.is_string()) bad_type();
-        break;
-      }
-      case KeyType::FieldVector: {
-        auto* arr = per_axis_array();
-        for (std::size_t a = 0; a < arr->size(); ++a)
-          check_field(arr->get(a), spec, label + ", axis " + std::to_string(a), path, bad_type);
-        break;
-      }
-      case KeyType::FieldValue:
-        check_field(&node, spec, label, path, bad_type);
-        break;
-    }
-  }
-
-  // A number (finite) or an expression that muparser compiles.
-  template <class BadType>
-  void check_field(toml::node* node, const KeySpec& spec, const std::string& label, const std::string& path,
-                   BadType&& bad_type) {
-    if (node->is_number()) {
-      if (!std::isfinite(*node->value<double>())) fail(node, path, "'" + spec.key + "' in " + label + " must be finite");
-      return;
-    }
-    if (!node->is_string()) bad_type();
-    const std::string text = *node->value<std::string>();
-    try {
-      Expression{text};
-    } catch (const ExpressionError& e) {
-      fail(node, path, "'" + spec.key + "' in " + label + ": expression \"" + text + "\": " + e.what());
-    }
-  }
-
- private:
-  std::string path_;
-  toml::table& root_;
-};
 
 std::vector<double> vec_of(const toml::node& n) {
   std::vector<double> v;
@@ -463,6 +310,14 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.fixed_dt = *get("time", "dt").value<double>();
   sc.max_steps = *get("time", "max_steps").value<long long>();
   sc.dt_min = *get("time", "dt_min").value<double>();
+  sc.step_rule = *get("time", "step_rule").value<std::string>();
+  sc.integrator = *get("method", "integrator").value<std::string>();
+  sc.velocity_smoothing = *get("method", "velocity_smoothing").value<double>();
+  for (auto [sec, key, set] : {std::tuple{"time", "step_rule", sc.step_rule != "cfl"},
+                               std::tuple{"method", "integrator", sc.integrator != "midpoint"},
+                               std::tuple{"method", "velocity_smoothing", sc.velocity_smoothing > 0}})
+    if (set && sc.method != "wcsph")
+      val.fail(root[sec][key].node(), std::string(sec) + "." + key, std::string("[") + sec + "] " + key + " is for method wcsph");
   sc.output_interval = root["output"]["interval"].value_or(sc.end_time / 20.0);
   if (sc.output_interval <= 0) sc.output_interval = sc.end_time / 20.0;
   sc.probe_interval = root["output"]["probe_interval"].value_or(sc.output_interval / 10.0);
@@ -675,7 +530,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       const int covering = isph ? 1 : static_cast<int>(std::ceil(sc.support_radius() / sc.spacing - 1e-9));
       WallBox w{vec_of(*where("wall", i, "min")), vec_of(*where("wall", i, "max")),
                 static_cast<int>(root["wall"][i]["layers"].value_or(static_cast<long long>(covering))),
-                *root["wall"][i]["open_top"].value<bool>(), {}};
+                *root["wall"][i]["open_top"].value<bool>(), {}, {}};
       w.open_ends.assign(D, false);
       if (auto* open = root["wall"][i]["open_ends"].as_array())
         for (int a = 0; a < D; ++a) w.open_ends[a] = *(*open)[a].value<bool>();
@@ -1048,11 +903,16 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       s.params.erase("name");
       sc.systems.push_back(std::move(s));
     }
+  // The neighbour search tiles a periodic axis with at least three cells of its search radius:
+  // the support, plus the Verlet skin, plus (MPS, ISPH) the step's own motion (their
+  // parameters' search_radius()).
+  const double search_radius = sc.support_radius() + sc.neighbour_skin * sc.spacing +
+                               (isph ? 3.0 * sc.cfl * sc.spacing : mps ? 2.5 * sc.cfl * sc.spacing : 0.0);
   for (int a = 0; a < D; ++a)
-    if (sc.periodic[a] && (sc.domain_max[a] - sc.domain_min[a]) < 3 * sc.support_radius())
+    if (sc.periodic[a] && (sc.domain_max[a] - sc.domain_min[a]) < 3 * search_radius)
       val.fail(get("domain", "periodic").as_array()->get(a), "domain.periodic",
-               "periodic axis " + std::to_string(a) + " is shorter than three support radii (" +
-                   std::to_string(3 * sc.support_radius()) + " m)");
+               "periodic axis " + std::to_string(a) + " is shorter than three neighbour-search radii (3 x (support + neighbour_skin spacings" +
+                   std::string(isph || mps ? " + the step's motion" : "") + ") = " + std::to_string(3 * search_radius) + " m)");
   if ((mps || isph) && sc.solver.preconditioner == "multigrid")
     for (int a = 0; a < D; ++a)
       if (sc.periodic[a])
@@ -1060,6 +920,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
                  "the bucket multigrid does not wrap periodic axes (axis " + std::to_string(a) +
                      "); use [solver] preconditioner = \"jacobi\" with a periodic domain");
   if (sc.fixed_dt > sc.end_time) val.fail(root["time"]["dt"].node(), "time.dt", "time.dt is larger than time.end");
+  load_heat_and_rheology(root, val, sc);
   // The neighbour search's cell grid covers the domain with cells of the support radius (4
   // bytes per cell): a domain far larger than the particles' extent at a tiny spacing (1e-6 m
   // particles in a 1e4 m box) would ask for more memory than the machine has.

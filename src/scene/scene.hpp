@@ -3,6 +3,7 @@
 // which reports any problem as SceneError("file:line:column: message").
 #include <toml++/toml.h>
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "geometry/triangle_mesh.hpp"
 #include "scene/motion_table.hpp"
 #include "scene/particle_import.hpp"
+#include "systems/rheology/rheology.hpp"
 #include "systems/swe/bed.hpp"
 
 namespace ryushi {
@@ -42,12 +44,22 @@ struct FluidBlock {
   // swe: the water depth, or the surface elevation (depth = surface - bed), NaN when not given.
   double depth = std::numeric_limits<double>::quiet_NaN();
   double surface_elevation = std::numeric_limits<double>::quiet_NaN();
+  double temperature = std::numeric_limits<double>::quiet_NaN();  // K (NaN: [material] temperature)
+};
+// A wall's or body's thermal condition in a scene with heat: a fixed temperature (Dirichlet), a
+// heat flux into the fluid (Neumann), or neither (adiabatic).
+struct ThermalCondition {
+  double temperature = std::numeric_limits<double>::quiet_NaN();  // K
+  double heat_flux = std::numeric_limits<double>::quiet_NaN();    // W/m^2 into the fluid
+  bool fixed() const { return !std::isnan(temperature); }
+  bool flux() const { return !std::isnan(heat_flux); }
 };
 struct WallBox {
   std::vector<double> min, max;
   int layers = 3;
   bool open_top = true;
   std::vector<bool> open_ends;  // per axis: no wall at either end (a channel's inlet and outlet)
+  ThermalCondition thermal;
 };
 // [[mesh]]: an STL surface placed in the scene (geometry/triangle_mesh.hpp), read and checked by
 // the loader; fluid blocks fill it, solids are made of it.
@@ -76,6 +88,7 @@ struct SolidSpec {
   std::string displacement_where;
   std::vector<MotionSample> displacement_table;  // or tabulated (scene/motion_table.hpp)
   bool moves() const { return !displacement.empty() || !displacement_table.empty(); }  // its particles
+  ThermalCondition thermal;
 };
 // Fluid particles inside [min, max] at the start hold p = pressure + gradient . x (Dirichlet):
 // the inlet and outlet of an Eulerian ISPH channel.
@@ -148,6 +161,10 @@ struct Scene {
   int reorder_interval = 25;
   double neighbour_skin = 0.6;  // Verlet skin in spacings
   double density = 1000, viscosity = 0, sound_speed = 0, sound_speed_factor = 10, gamma = 7;
+  Rheology rheology;  // [material] rheology and its parameters (viscosity: rheology.viscosity too)
+  // Heat ([material] conductivity > 0, docs/multiphysics.md): k, c and the blocks' default start.
+  double conductivity = 0, heat_capacity = 4186;
+  double temperature = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> gravity;
   std::string method = "wcsph";
   double delta = 0.1, alpha = 0.02, beta = 0;
@@ -171,6 +188,9 @@ struct Scene {
   SolverSpec solver;
   SweSpec swe;
   double end_time = 0, cfl = 0.2, fixed_dt = 0, dt_min = 1e-9;
+  std::string step_rule = "cfl";       // wcsph: cfl or seed001 (seed 001 eq. 35)
+  std::string integrator = "midpoint";  // wcsph: midpoint or leapfrog (seed 001 eqs. 15-17)
+  double velocity_smoothing = 0;        // wcsph: XSPH epsilon (seed 001 eq. 36); 0: off
   long long max_steps = 0;
   double output_interval = 0, probe_interval = 0, checkpoint_interval = 0;
   std::vector<std::string> output_fields;
@@ -185,6 +205,8 @@ struct Scene {
   std::vector<SystemSpec> systems;
 
   double smoothing_length() const { return smoothing_ratio * spacing; }
+  // Whether particles carry a temperature: conduction, or a viscosity that depends on it.
+  bool models_heat() const { return conductivity > 0 || rheology.temperature_dependent(); }
   double support_radius() const;  // the kernel's support (2h for most kernels)
   // Height of the tallest fluid block along the last axis (for c0 and hydrostatics).
   double fluid_height() const;

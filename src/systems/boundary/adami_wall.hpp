@@ -22,7 +22,7 @@ class AdamiWall final : public System<D> {
     Access a;
     a.read(components::position, components::velocity, components::kind, neighbours_resource)
         .write(components::pressure, components::density);
-    if (p_.mu > 0) a.write(components::wall_velocity);
+    if (p_.viscous()) a.write(components::wall_velocity);
     if (p_.wall_acceleration) a.read(components::body_acceleration);
     return a;
   }
@@ -34,7 +34,7 @@ class AdamiWall final : public System<D> {
     auto p = ctx.write(components::pressure);
     auto rho = ctx.write(components::density);
     std::span<Vec<D>> ghost;
-    if (p_.mu > 0) ghost = ctx.write(components::wall_velocity);
+    if (p_.viscous()) ghost = ctx.write(components::wall_velocity);
     std::span<const Vec<D>> acceleration;
     if (p_.wall_acceleration) acceleration = ctx.read(components::body_acceleration);
     const bool periodic = p_.domain.any_periodic();

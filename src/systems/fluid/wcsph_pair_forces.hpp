@@ -34,11 +34,11 @@ class WcsphPairForces final : public System<D> {
            components::mass, components::kind, neighbours_resource)
         .write(components::density_rate, components::acceleration);
     if (p_.delta > 0) a.read(components::density_gradient);
-    if (p_.mu > 0) a.read(components::viscosity, components::wall_velocity);
+    if (p_.viscous()) a.read(components::viscosity, components::wall_velocity);
     return a;
   }
   void initialise(World<D>& world, Resources&) override {
-    if (p_.mu <= 0) return;
+    if (!p_.viscous() || p_.variable_viscosity) return;  // a rheology model writes it each stage
     auto& mu = world.ensure(components::viscosity);
     std::fill(mu.begin(), mu.end(), p_.mu);
   }
@@ -57,7 +57,7 @@ class WcsphPairForces final : public System<D> {
               ctx.write(components::density_rate),
               ctx.write(components::acceleration)};
     if (p_.delta > 0) c.grad = ctx.read(components::density_gradient);
-    if (p_.mu > 0) {
+    if (p_.viscous()) {
       c.mu = ctx.read(components::viscosity);
       c.vw = ctx.read(components::wall_velocity);
     }
@@ -67,7 +67,7 @@ class WcsphPairForces final : public System<D> {
     c.inv_rho = inv_rho_;
     const auto& nl = ctx.read(neighbours_resource);
     // The branches that are fixed for a run become template arguments, out of the pair loop.
-    const bool periodic = p_.domain.any_periodic(), diffusion = p_.delta > 0, viscous = p_.mu > 0;
+    const bool periodic = p_.domain.any_periodic(), diffusion = p_.delta > 0, viscous = p_.viscous();
     const std::size_t block = pairs_once_block_size(nl, pairs_once_);
     dispatch(periodic, [&](auto P) {
       dispatch(diffusion, [&](auto Dif) {

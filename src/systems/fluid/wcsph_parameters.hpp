@@ -18,9 +18,13 @@ struct WcsphParameters {
   double delta = 0.1;  // delta-SPH diffusion coefficient (seed 002 eq. 18)
   double alpha = 0.02; // artificial viscosity, linear term (seed 002 eq. 23, "A")
   double beta = 0.0;   // artificial viscosity, quadratic term ("B")
-  double mu = 0;       // dynamic viscosity, Pa s (0: no laminar viscosity system)
+  double mu = 0;       // dynamic viscosity, Pa s (0: no laminar viscosity system); with a
+                       // rheology model the largest at the start (the first step's limit)
+  bool variable_viscosity = false;  // a rheology model writes the viscosity column each stage
   bool wall_no_slip = true;
   bool wall_acceleration = false;  // some body moves: Adami's wall pressure takes its acceleration
+
+  bool viscous() const { return mu > 0 || variable_viscosity; }  // the laminar viscous term is on
 
   // Tait stiffness B = rho0 c0^2 / gamma (seed 002 eq. 3 with p0 = B).
   double stiffness() const { return rho0 * c0 * c0 / gamma; }

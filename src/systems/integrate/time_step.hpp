@@ -2,8 +2,11 @@
 // Adaptive time step for the next step: the smallest of
 //   CFL:      cfl * h / (c0 + |v|max)
 //   force:    0.25 * sqrt(h / |a|max)
-//   viscous:  0.125 * h^2 / nu            (only with laminar viscosity)
-// (cf. seed 001 eq. 35, which takes h/(|v|+c) and h^2/(6 nu) with a factor 1/10.)
+//   viscous:  0.125 * h^2 / nu            (only with laminar viscosity; with a rheology model
+//             nu is the largest apparent viscosity of the fluid this step over rho0)
+//   thermal:  0.125 * h^2 / alpha         (only with heat conduction, alpha = k / (rho0 c))
+// or, with the seed001 rule, seed 001 eq. 35: 0.1 min(h / (|v|max + c0), h^2 / (6 nu)), both
+// bounded by the thermal limit.
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
@@ -17,12 +20,15 @@ namespace ryushi {
 template <int D>
 class TimeStepControl final : public System<D> {
  public:
-  TimeStepControl(const WcsphParameters<D>& p, double cfl) : p_(p), cfl_(cfl) {}
+  // thermal_limit: the heat conduction's fixed step limit (0: none).
+  TimeStepControl(const WcsphParameters<D>& p, double cfl, double thermal_limit = 0, bool seed001_rule = false)
+      : p_(p), cfl_(cfl), thermal_limit_(thermal_limit), seed001_(seed001_rule) {}
   std::string name() const override { return "time_step_control"; }
   Access access() const override {
-    return Access{}
-        .read(components::velocity, components::acceleration, components::kind)
-        .write(resources::dt);
+    Access a;
+    a.read(components::velocity, components::acceleration, components::kind).write(resources::dt);
+    if (p_.variable_viscosity) a.read(components::viscosity);
+    return a;
   }
   void run(SystemContext<D>& ctx) override {
     auto v = ctx.read(components::velocity);
@@ -40,19 +46,41 @@ class TimeStepControl final : public System<D> {
           return acc;
         },
         [](Pair x, Pair y) { return Pair{std::max(x.first, y.first), std::max(x.second, y.second)}; });
-    ctx.write(resources::dt) = limit(std::sqrt(m.first), std::sqrt(m.second));
+    double mu = p_.mu;
+    if (p_.variable_viscosity) {
+      auto column = ctx.read(components::viscosity);
+      mu = tbb::parallel_reduce(
+          tbb::blocked_range<std::size_t>(0, column.size(), 4096), 0.0,
+          [&](auto r, double acc) {
+            for (std::size_t i = r.begin(); i != r.end(); ++i)
+              if (kind[i] == kFluid) acc = std::max(acc, column[i]);
+            return acc;
+          },
+          [](double x, double y) { return std::max(x, y); });
+    }
+    ctx.write(resources::dt) = limit(std::sqrt(m.first), std::sqrt(m.second), mu);
   }
-  double limit(double vmax, double amax) const {
+  // mu: the largest dynamic viscosity present (negative: the scene's, p.mu).
+  double limit(double vmax, double amax, double mu = -1) const {
     const double h = p_.kernel.h();
+    if (mu < 0) mu = p_.mu;
+    if (seed001_) {
+      double dt = h / (vmax + p_.c0);
+      if (mu > 0) dt = std::min(dt, h * h * p_.rho0 / (6.0 * mu));
+      dt *= 0.1;
+      return thermal_limit_ > 0 ? std::min(dt, thermal_limit_) : dt;
+    }
     double dt = cfl_ * h / (p_.c0 + vmax);
     if (amax > 0) dt = std::min(dt, 0.25 * std::sqrt(h / amax));
-    if (p_.mu > 0) dt = std::min(dt, 0.125 * h * h * p_.rho0 / p_.mu);
+    if (mu > 0) dt = std::min(dt, 0.125 * h * h * p_.rho0 / mu);
+    if (thermal_limit_ > 0) dt = std::min(dt, thermal_limit_);
     return dt;
   }
 
  private:
   WcsphParameters<D> p_;
-  double cfl_;
+  double cfl_, thermal_limit_;
+  bool seed001_;
 };
 
 }  // namespace ryushi

@@ -20,7 +20,7 @@ void CellGrid<D>::build(const Domain<D>& domain, double radius, std::span<const 
       n = static_cast<std::int64_t>(std::floor(L / radius));
       if (n < 3)
         throw std::invalid_argument("periodic axis " + std::to_string(a) +
-                                    " is shorter than three support radii");
+                                    " is shorter than three neighbour-search radii (support + skin)");
     } else {
       // A hair wider than the radius so that rounding never puts two particles exactly
       // one radius apart two cells apart.
