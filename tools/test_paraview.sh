@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The real-client test (`make test-paraview`): short WCSPH, MPS, 3D and shallow-water runs opened in ParaView's
+# The real-client test (`make test-paraview`): short WCSPH, MPS, 3D, shallow-water and heat runs opened in ParaView's
 # own readers (XDMFReader, Xdmf3ReaderS, Xdmf3ReaderT and OpenDataFile's choice) under a virtual
 # display. tools/paraview_check.py asserts point and cell counts, array names and components,
 # the frame times and a non-empty picture per reader; then `ryushi render` (PNGs, MP4, a 3D
@@ -50,7 +50,11 @@ xvfb-run -a -s "-screen 0 1024x768x24" pvpython tools/paraview_check.py "$work/s
 # A round container (its walls on the fluid's lattice outside the circle) with the force on it.
 "$ryushi" run scenes/round_tank_2d.toml --out "$work/round_tank" --quiet --end-time 0.1 --set output.interval=0.05
 check round_tank "$work/round_tank" 0,0.05,0.1
-echo "test-paraview: 6 particle sets x 4 readers passed; screenshots in $images"
+# Heat and a temperature-dependent viscosity (docs/multiphysics.md): coloured by temperature.
+"$ryushi" run scenes/cooling_slump_2d.toml --out "$work/cooling" --quiet --end-time 0.1 --set output.interval=0.05
+check cooling "$work/cooling" 0,0.05,0.1 --arrays velocity,pressure,kind,id,temperature,viscosity,shear_rate \
+  --color temperature
+echo "test-paraview: 7 particle sets x 4 readers passed; screenshots in $images"
 
 # Pictures without ParaView: every frame and a movie, a 3D slice, and a clean refusal.
 "$ryushi" render "$work/wcsph" --movie >/dev/null
