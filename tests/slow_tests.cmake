@@ -72,3 +72,6 @@ set_tests_properties("leapfrog: one force evaluation per step, the dam-break cri
                      PROPERTIES LABELS slow COST 12)
 set_tests_properties("energy: a WCSPH sloshing tank with the leapfrog integrator never gains energy and keeps the linear period"
                      PROPERTIES LABELS slow COST 14)
+set_tests_properties("elastic: a clamped plate swings at the Euler-Bernoulli period within 5% at H/d = 16 and 20"
+                     PROPERTIES LABELS slow COST 180)
+set_tests_properties("elastic: the plate keeps its energy over ten periods" PROPERTIES LABELS slow COST 60)

@@ -67,7 +67,7 @@ struct HealthCheck {
     auto& p = w.column(components::pressure);
     auto& kind = w.column(components::kind);
     auto bad = [&](std::size_t i) -> int {
-      if (kind[i] != kFluid) return 0;
+      if (kind[i] != kFluid && kind[i] != kElastic) return 0;  // walls are placed, not integrated
       if (!x[i].allFinite()) return 1;
       if (!v[i].allFinite()) return 2;
       if (!std::isfinite(rho[i]) || rho[i] < 0 || (rho[i] == 0 && !density_may_vanish)) return 3;

@@ -44,7 +44,8 @@ struct Component {
 // Particle kinds stored in the `kind` column (the output contract: 0 fluid, 1 wall, 2+ other).
 // kDummy: outer wall layers of MPS that carry no pressure and only complete the number density
 // of the wall particles next to the fluid (Koshizuka's dummy particles).
-enum ParticleKind : std::int32_t { kFluid = 0, kWall = 1, kDummy = 2 };
+// kElastic: particles of a linear-elastic solid body (WCSPH, seed 002 section 2.2).
+enum ParticleKind : std::int32_t { kFluid = 0, kWall = 1, kDummy = 2, kElastic = 3 };
 
 // Components every method shares. Systems of one family may declare their own next to them.
 namespace components {

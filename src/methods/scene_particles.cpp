@@ -39,6 +39,11 @@ SceneParticles<D> scene_particles(const Scene& s) {
   auto inside_solid = [&](const Vec<D>& x) {
     for (std::size_t k = 0; k < solids.size(); ++k)
       if (solids[k].within(x, margin(k))) return true;
+    for (auto& e : s.elastic) {  // an elastic body's box, and half a spacing around it
+      bool inside = true;
+      for (int a = 0; a < D; ++a) inside = inside && x[a] > e.min[a] - 0.5 * d * (1 - 1e-9) && x[a] < e.max[a] + 0.5 * d * (1 - 1e-9);
+      if (inside) return true;
+    }
     return false;
   };
   // The fluid's lattice, which a container's layers continue: the first block's.
@@ -61,7 +66,7 @@ SceneParticles<D> scene_particles(const Scene& s) {
     }
     for_each_lattice_point<D>(lo, d, from, to, [&](const Vec<D>& lattice) {
       if (round && round->signed_distance(lattice) >= 0) return;
-      if (!solids.empty() && inside_solid(lattice)) return;
+      if ((!solids.empty() || !s.elastic.empty()) && inside_solid(lattice)) return;
       if constexpr (D == 3)
         if (b.mesh >= 0 && !s.meshes[b.mesh].mesh->inside(lattice)) return;
       Vec<D> x = lattice;

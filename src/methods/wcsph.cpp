@@ -9,6 +9,7 @@
 #include "methods/isph2_surface_detection.hpp"
 #include "methods/method.hpp"
 
+#include "methods/elastic_bodies.hpp"
 #include "methods/scene_particles.hpp"
 #include "methods/thermal_state.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
@@ -19,6 +20,9 @@
 #include "systems/heat/heat_conduction.hpp"
 #include "systems/heat/temperature_midpoint.hpp"
 #include "systems/rheology/apparent_viscosity.hpp"
+#include "systems/elastic/elastic_midpoint.hpp"
+#include "systems/elastic/fluid_on_solid.hpp"
+#include "systems/elastic/total_lagrangian_elastic.hpp"
 #include "systems/fluid/xsph_velocity_smoothing.hpp"
 #include "systems/integrate/leapfrog.hpp"
 #include "systems/integrate/midpoint.hpp"
@@ -48,6 +52,8 @@ WcsphParameters<D> wcsph_parameters(const Scene& s) {
   p.wall_no_slip = !s.wall_slip;
   p.wall_acceleration = std::any_of(s.solids.begin(), s.solids.end(), [](const SolidSpec& b) { return b.moves(); });
   p.variable_viscosity = s.rheology.shear_dependent() || s.rheology.temperature_dependent();
+  p.elastic_bodies = !s.elastic.empty();
+  for (auto& e : s.elastic) p.solid_sound_speed = std::max(p.solid_sound_speed, e.sound_speed());
   return p;
 }
 
@@ -78,6 +84,7 @@ void populate_world(const Scene& s, const WcsphParameters<D>& p, World<D>& world
       },
       [](int) { return kWall; });
   if (s.models_heat()) add_thermal_state<D>(s, appended, world);
+  if (!s.elastic.empty()) add_elastic_bodies<D>(s, p.rho0, world);
 }
 
 template <int D>
@@ -87,7 +94,7 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
   auto gradient = std::make_shared<RenormalisedDensityGradient<D>>(p);
   auto forces = std::make_shared<WcsphPairForces<D>>(p);
   auto eos = std::make_shared<TaitEquationOfState<D>>(p);
-  const bool walls = !s.walls.empty() || !s.solids.empty();
+  const bool walls = !s.walls.empty() || !s.solids.empty() || !s.elastic.empty();
   // Multiphysics (docs/multiphysics.md): only a scene that models them pays for these systems.
   SystemPtr<D> rheology, conduction;
   if (p.variable_viscosity)
@@ -96,6 +103,10 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
   const bool heat = s.conductivity > 0;
   if (heat) conduction = std::make_shared<HeatConduction<D>>(heat_parameters<D>(s, p.kernel, p.domain));
 
+  SystemPtr<D> elastic;  // one system for both stages: it keeps the bodies' rest neighbours
+  const auto elastic_p = elastic_parameters<D>(s, p.kernel, p.domain);
+  if (!s.elastic.empty()) elastic = std::make_shared<TotalLagrangianElastic<D>>(elastic_p);
+
   std::vector<SystemPtr<D>> list{neighbours};
   auto stage = [&] {
     if (walls) list.push_back(wall);
@@ -103,6 +114,10 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
     if (rheology) list.push_back(rheology);
     list.push_back(forces);
     if (conduction) list.push_back(conduction);
+    if (elastic) {  // the solid: the fluid's push, then its stress and acceleration
+      if (elastic_p.fluid) list.push_back(std::make_shared<FluidOnSolid<D>>(p, elastic_p.volume()));
+      list.push_back(elastic);
+    }
   };
   const bool leapfrog = s.integrator == "leapfrog";
   if (leapfrog) {  // one force evaluation per step (seed 001 eqs. 15-17)
@@ -113,10 +128,12 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
     stage();
     list.push_back(std::make_shared<MidpointPredictor<D>>());
     if (heat) list.push_back(std::make_shared<TemperaturePredictor<D>>());
+    if (!s.elastic.empty()) list.push_back(std::make_shared<ElasticPredictor<D>>());
     list.push_back(eos);
     stage();
     list.push_back(std::make_shared<MidpointCorrector<D>>());
     if (heat) list.push_back(std::make_shared<TemperatureCorrector<D>>());
+    if (!s.elastic.empty()) list.push_back(std::make_shared<ElasticCorrector<D>>(elastic_p.fluid));
     list.push_back(eos);
   }
   if (s.velocity_smoothing > 0)
@@ -152,6 +169,7 @@ MethodSetup<D> build_wcsph(const Scene& s, World<D>& world, const PipelineOption
   m.first_dt = TimeStepControl<D>(p, s.cfl, thermal_limit, s.step_rule == "seed001").limit(0.0, p.gravity.norm());
   if (s.models_heat()) m.frame_fields.push_back("temperature");
   if (p.variable_viscosity) m.frame_fields.insert(m.frame_fields.end(), {"viscosity", "shear_rate"});
+  if (!s.elastic.empty()) m.frame_fields.insert(m.frame_fields.end(), {"stress", "displacement", "solid_pressure", "elastic_body"});
   char b[96];
   std::snprintf(b, sizeof b, "h = %.4g m, c0 = %.4g m/s", p.kernel.h(), p.c0);
   m.summary = b;

@@ -5,7 +5,8 @@
 
 namespace ryushi {
 
-BlockFields::BlockFields(const FluidBlock& block, std::size_t index) : block_(block), index_(index) {
+BlockFields::BlockFields(const FluidBlock& block, std::size_t index, std::string label)
+    : block_(block), index_(index), label_(label.empty() ? "[[fluid]] #" + std::to_string(index) : std::move(label)) {
   // The loader compiled every formula once already, so these cannot fail to compile.
   for (auto& text : block.velocity_expression)
     velocity_.push_back(text.empty() ? std::nullopt : std::optional<Expression>(Expression(text)));
@@ -28,7 +29,7 @@ double BlockFields::evaluate(const Expression& e, const std::string& where, cons
   const double value = e(x[0], dimension > 1 ? x[1] : 0.0, dimension > 2 ? x[2] : 0.0);
   if (std::isfinite(value)) return value;
   std::ostringstream m;
-  m << where << ": [[fluid]] #" << index_ << " " << what << " \"" << e.source() << "\" is " << value
+  m << where << ": " << label_ << " " << what << " \"" << e.source() << "\" is " << value
     << " at (";
   for (int a = 0; a < dimension; ++a) m << (a ? ", " : "") << x[a];
   m << ")";

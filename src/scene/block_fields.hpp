@@ -13,7 +13,8 @@ namespace ryushi {
 
 class BlockFields {
  public:
-  BlockFields(const FluidBlock& block, std::size_t index);
+  // label: how errors name the block ("[[fluid]] #index" when empty; [[elastic]] bodies reuse it).
+  BlockFields(const FluidBlock& block, std::size_t index, std::string label = "");
   // Component `axis` of the initial velocity at x[0..dimension) (no rotation: callers add it).
   double velocity(int axis, const double* x, int dimension) const;
   bool has_pressure() const { return pressure_.has_value(); }
@@ -24,6 +25,7 @@ class BlockFields {
                   int dimension) const;
   const FluidBlock& block_;
   std::size_t index_;
+  std::string label_;
   std::vector<std::optional<Expression>> velocity_;
   std::optional<Expression> pressure_;
 };

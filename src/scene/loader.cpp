@@ -11,6 +11,7 @@
 #include "methods/system_registry.hpp"
 #include "geometry/solid_shape.hpp"
 #include "scene/expression.hpp"
+#include "scene/load_elastic.hpp"
 #include "scene/load_heat_rheology.hpp"
 #include "scene/particle_import.hpp"
 #include "scene/overlaps.hpp"
@@ -518,8 +519,8 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       sc.imports.push_back(std::move(spec));
     }
   }
-  if (sc.fluid.empty() && sc.imports.empty())
-    val.fail(root["fluid"].node(), "fluid", "the scene has no [[fluid]] block and no [[import]]");
+  if (sc.fluid.empty() && sc.imports.empty() && !root["elastic"])
+    val.fail(root["fluid"].node(), "fluid", "the scene has no [[fluid]] block, no [[import]] and no [[elastic]] body");
   // MPS: the wall layers a pressure-solved first layer needs behind it for a complete number
   // density (its dummy particles), for [[wall]] and [[solid]] alike.
   const int mps_layers =
@@ -776,7 +777,8 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     for (std::size_t i = 0; i < arr->size(); ++i) {
       ProbeSpec p{*root["probe"][i]["name"].value<std::string>(), *root["probe"][i]["type"].value<std::string>(), {}};
       if (auto* pos = where("probe", i, "position")) p.position = vec_of(*pos);
-      if ((p.type == "pressure" || p.type == "water_height") && p.position.empty())
+      if ((p.type == "pressure" || p.type == "water_height" || p.type == "solid_displacement" || p.type == "solid_stress") &&
+          p.position.empty())
         val.fail(&(*arr)[i], path_of("probe", i, "position"), "[[probe]] '" + p.name + "' of type " + p.type + " needs a position");
       if (!p.position.empty() && !inside(p.position, p.position))
         val.fail(where("probe", i, "position"), path_of("probe", i, "position"), "[[probe]] '" + p.name + "' lies outside the domain");
@@ -792,6 +794,13 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
         if (p.axis >= D)
           val.fail(where("probe", i, "axis"), path_of("probe", i, "axis"), "[[probe]] '" + p.name + "': axis must be below the dimension");
       }
+      if (p.type == "solid_displacement" || p.type == "solid_stress") {
+        p.axis = static_cast<int>(*root["probe"][i]["axis"].value<long long>());
+        if (p.axis >= D)
+          val.fail(where("probe", i, "axis"), path_of("probe", i, "axis"), "[[probe]] '" + p.name + "': axis must be below the dimension");
+      }
+      if (p.type.rfind("solid_", 0) == 0 && !root["elastic"])
+        val.fail(where("probe", i, "type"), path_of("probe", i, "type"), "[[probe]] '" + p.name + "': " + p.type + " needs an [[elastic]] body");
       if (p.type == "front_depth" && !swe)
         val.fail(where("probe", i, "type"), path_of("probe", i, "type"), "[[probe]] '" + p.name + "': front_depth is for method swe");
       for (auto& q : sc.probes)
@@ -921,6 +930,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
                      "); use [solver] preconditioner = \"jacobi\" with a periodic domain");
   if (sc.fixed_dt > sc.end_time) val.fail(root["time"]["dt"].node(), "time.dt", "time.dt is larger than time.end");
   load_heat_and_rheology(root, val, sc);
+  load_elastic(root, val, sc);
   // The neighbour search's cell grid covers the domain with cells of the support radius (4
   // bytes per cell): a domain far larger than the particles' extent at a tiny spacing (1e-6 m
   // particles in a 1e4 m box) would ask for more memory than the machine has.

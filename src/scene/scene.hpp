@@ -90,6 +90,15 @@ struct SolidSpec {
   bool moves() const { return !displacement.empty() || !displacement_table.empty(); }  // its particles
   ThermalCondition thermal;
 };
+// [[elastic]]: a linear-elastic solid body of particles on the lattice in [min, max] (WCSPH;
+// src/systems/elastic/). Particles inside [clamp_min, clamp_max] are held in place.
+struct ElasticSpec {
+  std::string name;
+  std::vector<double> min, max, clamp_min, clamp_max;
+  double density = 0, bulk_modulus = 0, shear_modulus = 0;
+  FluidBlock initial;  // its initial velocity (numbers and formulas), read as a fluid block's
+  double sound_speed() const { return std::sqrt((bulk_modulus + 4.0 / 3.0 * shear_modulus) / density); }
+};
 // Fluid particles inside [min, max] at the start hold p = pressure + gradient . x (Dirichlet):
 // the inlet and outlet of an Eulerian ISPH channel.
 struct FixedPressureBox {
@@ -197,6 +206,8 @@ struct Scene {
   std::vector<FluidBlock> fluid;
   std::vector<WallBox> walls;
   std::vector<SolidSpec> solids;
+  std::vector<ElasticSpec> elastic;
+  double solid_alpha = 1.0, solid_beta = 1.0;  // [method] solid_artificial_viscosity(_quadratic)
   std::vector<MeshSpec> meshes;
   std::vector<ImportSpec> imports;
   std::vector<FixedPressureBox> fixed_pressure;

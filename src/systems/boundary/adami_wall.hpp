@@ -5,7 +5,8 @@
 // piston, a shaken tank; zero for walls at rest or sliding at a constant velocity), its density
 // from the inverse equation of state, and (when laminar viscosity is on) a ghost velocity
 // 2 v_wall - v~ for no-slip, v_wall being the wall particle's own velocity: zero for containers,
-// a [[solid]]'s prescribed velocity for a lid, a sliding plate or a moving body.
+// a [[solid]]'s prescribed velocity for a lid, a sliding plate or a moving body. The particles of
+// [[elastic]] bodies get the same rows: to the fluid they are walls that move.
 #include "ecs/system.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
@@ -24,6 +25,7 @@ class AdamiWall final : public System<D> {
         .write(components::pressure, components::density);
     if (p_.viscous()) a.write(components::wall_velocity);
     if (p_.wall_acceleration) a.read(components::body_acceleration);
+    if (p_.elastic_bodies) a.read(components::acceleration);
     return a;
   }
   void run(SystemContext<D>& ctx) override {
@@ -38,7 +40,8 @@ class AdamiWall final : public System<D> {
     std::span<const Vec<D>> acceleration;
     if (p_.wall_acceleration) acceleration = ctx.read(components::body_acceleration);
     const bool periodic = p_.domain.any_periodic();
-    for_each_of_kind(kind, kWall, [&](std::size_t w) {
+    // felt(w): the acceleration the fluid's weight presses the wall with, g - a_w.
+    auto condition = [&](std::size_t w, auto&& felt) {
       double sum_w = 0, sum_p = 0;
       Vec<D> sum_rho_r = Vec<D>::Zero(), sum_v = Vec<D>::Zero();
       for (auto f : nl.of(w)) {
@@ -50,12 +53,21 @@ class AdamiWall final : public System<D> {
         sum_rho_r += rho[f] * r * W;
         sum_v += v[f] * W;
       }
-      const Vec<D> felt = acceleration.empty() ? p_.gravity : Vec<D>(p_.gravity - acceleration[w]);
-      double pw = sum_w > 0 ? (sum_p + felt.dot(sum_rho_r)) / sum_w : 0.0;
+      double pw = sum_w > 0 ? (sum_p + felt(w).dot(sum_rho_r)) / sum_w : 0.0;
       p[w] = pw;
       rho[w] = p_.density(pw);
       if (!ghost.empty()) ghost[w] = sum_w > 0 ? Vec<D>(2 * v[w] - sum_v / sum_w) : v[w];
+    };
+    for_each_of_kind(kind, kWall, [&](std::size_t w) {
+      condition(w, [&](std::size_t i) { return acceleration.empty() ? p_.gravity : Vec<D>(p_.gravity - acceleration[i]); });
     });
+    // An elastic body's particles are walls that move with the solid (its last stage's acceleration).
+    if (p_.elastic_bodies) {
+      auto a = ctx.read(components::acceleration);
+      for_each_of_kind(kind, kElastic, [&](std::size_t w) {
+        condition(w, [&](std::size_t i) { return Vec<D>(p_.gravity - a[i]); });
+      });
+    }
   }
 
  private:

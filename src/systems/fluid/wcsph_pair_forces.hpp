@@ -113,16 +113,9 @@ class WcsphPairForces final : public System<D> {
       return xi - xj;
   }
 
-  // (p_i + p_j)/(rho_i rho_j) + Pi_ij: Monaghan's viscosity for approaching pairs (v_ij.x_ij < 0),
-  // mu_ij = h v_ij.x_ij / (r^2 + 0.01 h^2). Symmetric in (i, j).
   double pressure_coefficient(double pi, double pj, double rhoi, double rhoj, double inv_rho_ij, double vx,
                               double inv_r2_eta2) const {
-    double coeff = (pi + pj) * inv_rho_ij;
-    if (vx < 0) {
-      const double mu = p_.kernel.h() * vx * inv_r2_eta2;
-      coeff += (-p_.alpha * p_.c0 * mu + p_.beta * mu * mu) / (0.5 * (rhoi + rhoj));
-    }
-    return coeff;
+    return p_.pair_pressure_coefficient(pi, pj, rhoi, rhoj, inv_rho_ij, vx, inv_r2_eta2);
   }
 
   // The particle's rates from its pair sums, the same for both variants: the same sums in the

@@ -23,8 +23,23 @@ struct WcsphParameters {
   bool variable_viscosity = false;  // a rheology model writes the viscosity column each stage
   bool wall_no_slip = true;
   bool wall_acceleration = false;  // some body moves: Adami's wall pressure takes its acceleration
+  bool elastic_bodies = false;     // [[elastic]] particles: moving walls to the fluid (Adami's rows)
+  double solid_sound_speed = 0;    // the stiffest elastic body's sqrt((K + 4G/3)/rho0): a step limit
 
   bool viscous() const { return mu > 0 || variable_viscosity; }  // the laminar viscous term is on
+
+  // (p_i + p_j)/(rho_i rho_j) + Pi_ij: Monaghan's viscosity for approaching pairs (v_ij.x_ij < 0),
+  // mu_ij = h v_ij.x_ij / (r^2 + 0.01 h^2). Symmetric in (i, j). inv_rho_ij = 1/(rho_i rho_j),
+  // inv_r2_eta2 = 1/(r^2 + 0.01 h^2): the pair loop's shared divisions.
+  double pair_pressure_coefficient(double pi, double pj, double rhoi, double rhoj, double inv_rho_ij, double vx,
+                                   double inv_r2_eta2) const {
+    double coeff = (pi + pj) * inv_rho_ij;
+    if (vx < 0) {
+      const double m = kernel.h() * vx * inv_r2_eta2;
+      coeff += (-alpha * c0 * m + beta * m * m) / (0.5 * (rhoi + rhoj));
+    }
+    return coeff;
+  }
 
   // Tait stiffness B = rho0 c0^2 / gamma (seed 002 eq. 3 with p0 = B).
   double stiffness() const { return rho0 * c0 * c0 / gamma; }

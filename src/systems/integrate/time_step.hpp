@@ -5,6 +5,7 @@
 //   viscous:  0.125 * h^2 / nu            (only with laminar viscosity; with a rheology model
 //             nu is the largest apparent viscosity of the fluid this step over rho0)
 //   thermal:  0.125 * h^2 / alpha         (only with heat conduction, alpha = k / (rho0 c))
+//   solid:    cfl * h / (c_s + |v|max)    (only with elastic bodies, c_s their largest sound speed)
 // or, with the seed001 rule, seed 001 eq. 35: 0.1 min(h / (|v|max + c0), h^2 / (6 nu)), both
 // bounded by the thermal limit.
 #include <tbb/blocked_range.h>
@@ -65,12 +66,13 @@ class TimeStepControl final : public System<D> {
     const double h = p_.kernel.h();
     if (mu < 0) mu = p_.mu;
     if (seed001_) {
-      double dt = h / (vmax + p_.c0);
+      double dt = h / (vmax + std::max(p_.c0, p_.solid_sound_speed));
       if (mu > 0) dt = std::min(dt, h * h * p_.rho0 / (6.0 * mu));
       dt *= 0.1;
       return thermal_limit_ > 0 ? std::min(dt, thermal_limit_) : dt;
     }
     double dt = cfl_ * h / (p_.c0 + vmax);
+    if (p_.solid_sound_speed > 0) dt = std::min(dt, cfl_ * h / (p_.solid_sound_speed + vmax));
     if (amax > 0) dt = std::min(dt, 0.25 * std::sqrt(h / amax));
     if (mu > 0) dt = std::min(dt, 0.125 * h * h * p_.rho0 / mu);
     if (thermal_limit_ > 0) dt = std::min(dt, thermal_limit_);

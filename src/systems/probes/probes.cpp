@@ -1,5 +1,6 @@
 #include "systems/probes/probes.hpp"
 
+#include "systems/elastic/elastic_parameters.hpp"
 #include "systems/probes/solid_force.hpp"
 #include "systems/operators/mps_reference.hpp"
 #include "systems/probes/solid_surface_force.hpp"
@@ -125,6 +126,28 @@ std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const Wo
                                ? solid_force<D>(probe.solid, world, kernel, domain)
                                : solid_surface_force<D>(probe.solid, world, kernel, domain, gravity, surface);
       out.push_back(force[probe.axis]);
+    } else if (probe.type == "solid_displacement" || probe.type == "solid_stress") {
+      // The elastic particle that started nearest the probe.
+      auto& rest = world.column(components::rest_position);
+      std::size_t nearest = world.size();
+      for (std::size_t i = 0; i < world.size(); ++i)
+        if (kind[i] == kElastic && (nearest == world.size() || (rest[i] - at).squaredNorm() < (rest[nearest] - at).squaredNorm()))
+          nearest = i;
+      if (nearest == world.size()) {
+        out.push_back(std::numeric_limits<double>::quiet_NaN());
+      } else if (probe.type == "solid_displacement") {
+        out.push_back(domain.displacement(x[nearest], rest[nearest])[probe.axis]);
+      } else {
+        out.push_back(world.column(components::stress)[nearest](probe.axis, probe.axis));
+      }
+    } else if (probe.type == "solid_energy") {
+      auto& rho_s = world.column(components::solid_rest_density);
+      auto& strain = world.column(components::strain_energy);
+      const double volume = std::pow(d, D);
+      double energy = 0;
+      for (std::size_t i = 0; i < world.size(); ++i)
+        if (kind[i] == kElastic) energy += 0.5 * rho_s[i] * volume * v[i].squaredNorm() + strain[i];
+      out.push_back(energy);
     } else {  // water_height
       out.push_back(water_surface<D>(at, world, kernel, rho0, domain.max[D - 1], d));
     }

@@ -1,0 +1,236 @@
+// Linear-elastic solids under WCSPH (issue 14, seed 002 section 2.2; docs/multiphysics.md): the
+// oscillating clamped plate of Gray, Monaghan & Swift (2001) against Euler-Bernoulli, its energy
+// over ten periods, a block at rest on a wall, the momentum that water and a solid exchange, and
+// the errors of bad solid input.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+
+#include "h5_read.hpp"
+#include "scene_error.hpp"
+#include "test_util.hpp"
+
+using namespace ryushi;
+
+namespace {
+
+std::string bin() {
+  return RYUSHI_BINARY;
+}
+
+std::string run(const std::string& scene, const std::string& sets, const std::string& name) {
+  auto dir = test::unique_scratch(name);
+  auto r = test::run_command(bin() + " run " + scene + " --quiet --out " + dir.string() + " " + sets);
+  REQUIRE_MESSAGE(r.code == 0, r.output);
+  return dir.string();
+}
+
+// The plate of scenes/elastic_plate_2d.toml: E = 2 MPa, nu = 0.3975, rho = 1000, H = 0.02 m,
+// L = 0.2 m, kL = 1.875; plane strain.
+double euler_bernoulli_period() {
+  const double E = 2e6, nu = 0.3975, rho = 1000, H = 0.02, k = 1.875 / 0.2;
+  return 2 * std::numbers::pi / std::sqrt(E * H * H * std::pow(k, 4) / (12 * rho * (1 - nu * nu)));
+}
+
+// The first time after t = 0.02 s that the tip, swinging up from rest, comes back down through 0.
+double first_return(const std::filesystem::path& probes) {
+  auto csv = test::read_csv(probes);
+  const auto &t = csv["time"], &y = csv["tip_y"];
+  for (std::size_t k = 0; k + 1 < t.size(); ++k)
+    if (t[k] > 0.02 && y[k] > 0 && y[k + 1] <= 0) return t[k] - y[k] * (t[k + 1] - t[k]) / (y[k + 1] - y[k]);
+  FAIL("the tip never came back through zero");
+  return 0;
+}
+
+}  // namespace
+
+TEST_CASE("elastic: a clamped plate swings at the Euler-Bernoulli period within 5% at H/d = 16 and 20") {
+  // The tip comes back through its rest position after half a period. Measured: +3.7% at H/d =
+  // 16, +2.8% at 20; +7.6% (full period) at 10, +5.7% at 12, 26% at 5: the error falls as
+  // (h/H)^2 (h = 1.5 d), the smoothing rounding off the bending strain across the thickness.
+  const double half = 0.5 * euler_bernoulli_period();
+  double previous = 1;
+  for (int cells : {16, 20}) {
+    char sets[160];
+    std::snprintf(sets, sizeof sets, "--set particles.spacing=%.9g --set time.end=0.15", 0.02 / cells);
+    const auto out = run(test::scene_path("elastic_plate_2d.toml"), sets, "plate");
+    const double error = first_return(std::filesystem::path(out) / "probes.csv") / half - 1;
+    MESSAGE("H/d = ", cells, ": half period ", half * (1 + error), " s against ", half, " s: ", 100 * error,
+            "%");
+    CHECK(std::abs(error) < 0.05);
+    CHECK(std::abs(error) < previous);
+    previous = std::abs(error);
+  }
+}
+
+TEST_CASE("elastic: the plate keeps its energy over ten periods") {
+  // H/d = 5, no artificial viscosity: velocity Verlet is symplectic and the total Lagrangian
+  // forces derive from the strain energy, so kinetic + strain energy stays (measured within
+  // 1e-5 of E0 over 2.6 s); the seed's artificial viscosity (A = B = 1) only takes energy out.
+  const double T = euler_bernoulli_period();
+  for (const char* viscosity : {"0", "1"}) {
+    const auto out =
+        run(test::scene_path("elastic_plate_2d.toml"),
+            std::string("--set particles.spacing=0.004 --set time.end=") + std::to_string(10 * T) +
+                " --set output.interval=1.0 --set output.probe_interval=0.01" +
+                " --set method.solid_artificial_viscosity=" + viscosity +
+                " --set method.solid_artificial_viscosity_quadratic=" + viscosity,
+            "plate_energy");
+    auto csv = test::read_csv(std::filesystem::path(out) / "probes.csv");
+    const auto& E = csv["energy"];
+    double low = 1e300, high = 0;
+    for (double e : E) low = std::min(low, e), high = std::max(high, e);
+    MESSAGE("artificial viscosity ", std::string(viscosity), ": energy ", E.front(), " J/m, between ",
+            low / E.front(), " and ", high / E.front(), " of it over ", csv["time"].back(), " s");
+    CHECK(csv["time"].back() >= 10 * T - 0.01);  // the last probe sample, every 0.01 s
+    CHECK(high <= E.front() * (1 + 1e-3));
+    if (std::string(viscosity) == "0") CHECK(low >= E.front() * (1 - 1e-3));
+  }
+}
+
+TEST_CASE("elastic: a block at rest on a wall settles by its own weight and keeps its shape") {
+  // A 5 x 5 cm block (E = 1 MPa, nu = 0.3, rho = 1000) on the floor of a tank, under gravity. Its
+  // top settles by rho g H^2 / (2 E'), E' = E / (1 - nu^2) (plane strain, free sides): 1.12e-5 m.
+  const std::string text = R"([scene]
+dimension = 2
+[domain]
+min = [-0.05, -0.05]
+max = [0.15, 0.15]
+[particles]
+spacing = 0.005
+[method]
+name = "wcsph"
+[time]
+end = 0.5
+[output]
+interval = 0.25
+probe_interval = 0.01
+[[wall]]
+min = [0.0, 0.0]
+max = [0.1, 0.1]
+[[elastic]]
+name = "block"
+min = [0.025, 0.0]
+max = [0.075, 0.05]
+density = 1000.0
+youngs_modulus = 1.0e6
+poisson_ratio = 0.3
+[[probe]]
+name = "top_y"
+type = "solid_displacement"
+position = [0.05, 0.05]
+axis = 1
+)";
+  auto dir = test::unique_scratch("elastic_block");
+  test::write_text(dir / "block.toml", text);
+  const auto out = run((dir / "block.toml").string(), "", "elastic_block_run");
+  auto csv = test::read_csv(std::filesystem::path(out) / "probes.csv");
+  const double expected = 1000 * 9.81 * 0.05 * 0.05 / (2 * 1e6 / (1 - 0.09));
+  MESSAGE("top settles by ", -csv["top_y"].back(), " m (rho g H^2 / 2E' = ", expected, " m)");
+  CHECK(-csv["top_y"].back() == doctest::Approx(expected).epsilon(0.05));
+  auto u = test::read_dataset(test::last_frame(out), "displacement").values;
+  auto kind = test::read_dataset(test::last_frame(out), "kind").values;
+  double largest = 0;
+  for (std::size_t i = 0; i < kind.size(); ++i)
+    if (kind[i] == 3) largest = std::max(largest, std::hypot(u[3 * i], u[3 * i + 1]));
+  CHECK(largest < 0.01 * 0.05);
+}
+
+TEST_CASE("elastic: water hitting an elastic block exchanges momentum and keeps the total") {
+  // No gravity, no walls: a water block at 1 m/s runs into an elastic block at rest. The fluid
+  // feels the solid's particles as moving walls, the solid the reaction pair by pair, so the
+  // total momentum (fluid m v plus solid rho0 d^2 v) is kept to round-off while the solid takes
+  // up a good part of it.
+  const std::string text = R"([scene]
+dimension = 2
+[domain]
+min = [-0.2, -0.2]
+max = [0.4, 0.3]
+[particles]
+spacing = 0.005
+[material]
+sound_speed = 20.0
+[physics]
+gravity = [0.0, 0.0]
+[method]
+name = "wcsph"
+[time]
+end = 0.06
+[output]
+interval = 0.03
+fields = ["mass"]
+[[fluid]]
+min = [0.0, 0.0]
+max = [0.05, 0.05]
+velocity = [1.0, 0.0]
+[[elastic]]
+name = "block"
+min = [0.06, 0.0]
+max = [0.11, 0.05]
+density = 1100.0
+youngs_modulus = 1.0e6
+poisson_ratio = 0.3
+)";
+  auto dir = test::unique_scratch("elastic_momentum");
+  test::write_text(dir / "hit.toml", text);
+  const auto out = run((dir / "hit.toml").string(), "", "elastic_momentum_run");
+  auto momentum = [&](int frame, double* solid) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.h5", frame);
+    auto f = std::filesystem::path(out) / "frames" / name;
+    auto m = test::read_dataset(f, "mass").values, v = test::read_dataset(f, "velocity").values,
+         kind = test::read_dataset(f, "kind").values;
+    double total = 0;
+    *solid = 0;
+    for (std::size_t i = 0; i < kind.size(); ++i) {
+      if (kind[i] == 0) total += m[i] * v[3 * i];
+      if (kind[i] == 3) *solid += 1100 * 0.005 * 0.005 * v[3 * i];
+    }
+    return total + *solid;
+  };
+  double solid0 = 0, solid = 0;
+  const double p0 = momentum(0, &solid0), p = momentum(2, &solid);
+  MESSAGE("momentum ", p0, " -> ", p, " kg m/s per m; the solid's ", solid0, " -> ", solid);
+  CHECK(solid0 == 0.0);
+  CHECK(solid > 0.2 * p0);
+  CHECK(std::abs(p - p0) < 1e-10 * p0);
+}
+
+TEST_CASE("elastic: bad solid input is an error at the key") {
+  const std::string head = R"([scene]
+dimension = 2
+[domain]
+min = [-0.2, -0.2]
+max = [1.2, 1.2]
+[particles]
+spacing = 0.05
+[time]
+end = 0.1
+)";
+  auto body = [&](const std::string& keys, const std::string& rest = "") {
+    return test::scene_error(head + rest +
+                             "[[elastic]]\nmin = [0.0, 0.0]\nmax = [0.5, 0.5]\ndensity = 1000.0\n" + keys);
+  };
+  CHECK(body("youngs_modulus = 1e6\npoisson_ratio = 0.6\n") ==
+        "bad.toml:15:17: [[elastic]] #0 poisson_ratio is 0.6; it must be in (-1, 0.5) (0.5: incompressible, "
+        "no finite bulk modulus)");
+  CHECK(body("youngs_modulus = 1e6\n") ==
+        "bad.toml:14:18: [[elastic]] #0 needs both youngs_modulus and poisson_ratio");
+  CHECK(body("") ==
+        "bad.toml:13:11: [[elastic]] #0 needs its stiffness: bulk_modulus and shear_modulus, or "
+        "youngs_modulus and poisson_ratio");
+  CHECK(body("bulk_modulus = -1.0\nshear_modulus = 1.0\n")
+            .find("'bulk_modulus' in [[elastic]] #0 is -1; it must be > 0") != std::string::npos);
+  CHECK(body("bulk_modulus = 1e6\nshear_modulus = 1e6\nclamp_min = [0.0, 0.0]\n") ==
+        "bad.toml:16:13: [[elastic]] #0 needs both clamp_min and clamp_max");
+  CHECK(body("bulk_modulus = 1e6\nshear_modulus = 1e6\n", "[method]\nname = \"mps\"\n") ==
+        "bad.toml:13:7: [[elastic]] #0 is for method wcsph");
+  // A fixed step the elastic waves outrun: h / c_s = 0.075 / sqrt(2.333e6 / 1000) = 1.55e-3 s.
+  CHECK(test::scene_error(head + "dt = 0.01\n[[elastic]]\nmin = [0.0, 0.0]\nmax = [0.5, 0.5]\ndensity = "
+                                 "1000.0\nbulk_modulus = 1e6\nshear_modulus = 1e6\n") ==
+        "bad.toml:10:6: [time] dt = 0.01 s exceeds [[elastic]] #0's elastic wave step h / c_s = 0.00155265 s "
+        "(c_s = sqrt((K + 4G/3) / rho0) = 48.3046 m/s)");
+}
