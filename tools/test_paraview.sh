@@ -54,7 +54,12 @@ check round_tank "$work/round_tank" 0,0.05,0.1
 "$ryushi" run scenes/cooling_slump_2d.toml --out "$work/cooling" --quiet --end-time 0.1 --set output.interval=0.05
 check cooling "$work/cooling" 0,0.05,0.1 --arrays velocity,pressure,kind,id,temperature,viscosity,shear_rate \
   --color temperature
-echo "test-paraview: 7 particle sets x 4 readers passed; screenshots in $images"
+# An elastic plate (docs/multiphysics.md): its Cauchy stress as a 3 x 3 tensor, coloured by displacement.
+"$ryushi" run scenes/elastic_plate_2d.toml --out "$work/elastic" --quiet --end-time 0.04 --set particles.spacing=0.004 \
+  --set output.interval=0.02
+check elastic "$work/elastic" 0,0.02,0.04 --tensors stress --arrays velocity,kind,id,displacement,solid_pressure \
+  --color displacement
+echo "test-paraview: 8 particle sets x 4 readers passed; screenshots in $images"
 
 # Pictures without ParaView: every frame and a movie, a 3D slice, and a clean refusal.
 "$ryushi" render "$work/wcsph" --movie >/dev/null
