@@ -235,8 +235,11 @@ class Runner {
     slot_reorder_ = profiler_.slot("reorder_by_cell");
     slot_health_ = profiler_.slot("health_check");
     if (!opt_.quiet) {
-      spdlog::info("{}: {}D {}, {} fluid + {} wall particles, {} -> {}", scene_.name, D, scene_.method,
-                   initial_.fluid, initial_.walls, method_summary_, out_.string());
+      const auto& kind = world_.column(components::kind);
+      const auto elastic = static_cast<std::size_t>(std::count(kind.begin(), kind.end(), kElastic));
+      const std::string solids = elastic > 0 ? " + " + std::to_string(elastic) + " elastic" : "";
+      spdlog::info("{}: {}D {}, {} fluid + {} wall{} particles, {} -> {}", scene_.name, D, scene_.method,
+                   initial_.fluid, initial_.walls - elastic, solids, method_summary_, out_.string());
     }
 
     std::string status = "completed", message;
