@@ -57,6 +57,12 @@ WcsphParameters<D> wcsph_parameters(const Scene& s) {
   return p;
 }
 
+// Heat conduction's fixed step limit (0: the scene conducts no heat).
+template <int D>
+double thermal_step_limit(const Scene& s, const WcsphParameters<D>& p) {
+  return s.conductivity > 0 ? heat_parameters<D>(s, p.kernel, p.domain).step_limit(p.rho0) : 0.0;
+}
+
 // A rheology model's first step: the largest viscosity at rest over the starting temperatures
 // (later steps take the largest of the column).
 template <int D>
@@ -105,7 +111,11 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
 
   SystemPtr<D> elastic;  // one system for both stages: it keeps the bodies' rest neighbours
   const auto elastic_p = elastic_parameters<D>(s, p.kernel, p.domain);
-  if (!s.elastic.empty()) elastic = std::make_shared<TotalLagrangianElastic<D>>(elastic_p);
+  SystemPtr<D> fluid_push;  // the fluid's force on the solid, before the solid's own
+  if (!s.elastic.empty()) {
+    elastic = std::make_shared<TotalLagrangianElastic<D>>(elastic_p);
+    if (elastic_p.fluid) fluid_push = std::make_shared<FluidOnSolid<D>>(p, elastic_p.volume());
+  }
 
   std::vector<SystemPtr<D>> list{neighbours};
   auto stage = [&] {
@@ -114,10 +124,8 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
     if (rheology) list.push_back(rheology);
     list.push_back(forces);
     if (conduction) list.push_back(conduction);
-    if (elastic) {  // the solid: the fluid's push, then its stress and acceleration
-      if (elastic_p.fluid) list.push_back(std::make_shared<FluidOnSolid<D>>(p, elastic_p.volume()));
-      list.push_back(elastic);
-    }
+    if (fluid_push) list.push_back(fluid_push);
+    if (elastic) list.push_back(elastic);
   };
   const bool leapfrog = s.integrator == "leapfrog";
   if (leapfrog) {  // one force evaluation per step (seed 001 eqs. 15-17)
@@ -150,9 +158,9 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
     list.push_back(std::make_shared<FickianShifting<D>>(FickianShiftingParameters<D>{
         p.kernel, p.domain, p.spacing, s.fickian_coefficient, s.anti_clumping, s.max_shift, false}));
   }
-  const double thermal_limit = heat ? heat_parameters<D>(s, p.kernel, p.domain).step_limit(p.rho0) : 0.0;
   if (s.fixed_dt <= 0)
-    list.push_back(std::make_shared<TimeStepControl<D>>(p, s.cfl, thermal_limit, s.step_rule == "seed001"));
+    list.push_back(
+        std::make_shared<TimeStepControl<D>>(p, s.cfl, thermal_step_limit<D>(s, p), s.step_rule == "seed001"));
   return list;
 }
 
@@ -165,8 +173,8 @@ MethodSetup<D> build_wcsph(const Scene& s, World<D>& world, const PipelineOption
   MethodSetup<D> m;
   m.context = method_context<D>(s, p.kernel);
   m.pipeline = wcsph_pipeline<D>(s, p);
-  const double thermal_limit = s.conductivity > 0 ? heat_parameters<D>(s, p.kernel, p.domain).step_limit(p.rho0) : 0.0;
-  m.first_dt = TimeStepControl<D>(p, s.cfl, thermal_limit, s.step_rule == "seed001").limit(0.0, p.gravity.norm());
+  m.first_dt =
+      TimeStepControl<D>(p, s.cfl, thermal_step_limit<D>(s, p), s.step_rule == "seed001").limit(0.0, p.gravity.norm());
   if (s.models_heat()) m.frame_fields.push_back("temperature");
   if (p.variable_viscosity) m.frame_fields.insert(m.frame_fields.end(), {"viscosity", "shear_rate"});
   if (!s.elastic.empty()) m.frame_fields.insert(m.frame_fields.end(), {"stress", "displacement", "solid_pressure", "elastic_body"});
