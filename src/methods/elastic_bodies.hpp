@@ -58,8 +58,10 @@ void add_elastic_bodies(const Scene& s, double fluid_rho0, World<D>& world) {
     if (kind[i] != kElastic) body[i] = -1;
 }
 
+// step_fraction: the step rule's fraction of h / c (the CFL number, or seed 001's 0.1).
 template <int D>
-ElasticParameters<D> elastic_parameters(const Scene& s, const Kernel<D>& kernel, const Domain<D>& domain) {
+ElasticParameters<D> elastic_parameters(const Scene& s, const Kernel<D>& kernel, const Domain<D>& domain,
+                                        double step_fraction) {
   ElasticParameters<D> p;
   p.kernel = kernel;
   p.domain = domain;
@@ -69,6 +71,8 @@ ElasticParameters<D> elastic_parameters(const Scene& s, const Kernel<D>& kernel,
   p.beta = s.solid_beta;
   for (auto& e : s.elastic) p.max_sound_speed = std::max(p.max_sound_speed, e.sound_speed());
   p.fluid = !s.fluid.empty() || !s.imports.empty();
+  p.max_substeps = s.solid_substeps;
+  if (p.max_sound_speed > 0) p.substep_limit = step_fraction * kernel.h() / p.max_sound_speed;
   return p;
 }
 

@@ -53,7 +53,8 @@ WcsphParameters<D> wcsph_parameters(const Scene& s) {
   p.wall_acceleration = std::any_of(s.solids.begin(), s.solids.end(), [](const SolidSpec& b) { return b.moves(); });
   p.variable_viscosity = s.rheology.shear_dependent() || s.rheology.temperature_dependent();
   p.elastic_bodies = !s.elastic.empty();
-  for (auto& e : s.elastic) p.solid_sound_speed = std::max(p.solid_sound_speed, e.sound_speed());
+  // With solid substeps the step keeps N times the solid's limit: its sound speed over N.
+  for (auto& e : s.elastic) p.solid_sound_speed = std::max(p.solid_sound_speed, e.sound_speed() / s.solid_substeps);
   return p;
 }
 
@@ -109,11 +110,13 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
   const bool heat = s.conductivity > 0;
   if (heat) conduction = std::make_shared<HeatConduction<D>>(heat_parameters<D>(s, p.kernel, p.domain));
 
-  SystemPtr<D> elastic;  // one system for both stages: it keeps the bodies' rest neighbours
-  const auto elastic_p = elastic_parameters<D>(s, p.kernel, p.domain);
-  SystemPtr<D> fluid_push;  // the fluid's force on the solid, before the solid's own
+  // The solid's force model keeps the bodies' rest neighbours; its substeps (first stage) and
+  // its forces at the end of the step (second stage) share it.
+  const auto elastic_p = elastic_parameters<D>(s, p.kernel, p.domain, s.step_rule == "seed001" ? 0.1 : s.cfl);
+  std::shared_ptr<TotalLagrangianElasticity<D>> elastic;
+  SystemPtr<D> fluid_push;  // the fluid's force on the solid (second stage: the final kick's)
   if (!s.elastic.empty()) {
-    elastic = std::make_shared<TotalLagrangianElastic<D>>(elastic_p);
+    elastic = std::make_shared<TotalLagrangianElasticity<D>>(elastic_p);
     if (elastic_p.fluid) fluid_push = std::make_shared<FluidOnSolid<D>>(p, elastic_p.volume());
   }
 
@@ -124,8 +127,6 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
     if (rheology) list.push_back(rheology);
     list.push_back(forces);
     if (conduction) list.push_back(conduction);
-    if (fluid_push) list.push_back(fluid_push);
-    if (elastic) list.push_back(elastic);
   };
   const bool leapfrog = s.integrator == "leapfrog";
   if (leapfrog) {  // one force evaluation per step (seed 001 eqs. 15-17)
@@ -136,12 +137,14 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
     stage();
     list.push_back(std::make_shared<MidpointPredictor<D>>());
     if (heat) list.push_back(std::make_shared<TemperaturePredictor<D>>());
-    if (!s.elastic.empty()) list.push_back(std::make_shared<ElasticPredictor<D>>());
+    if (elastic) list.push_back(std::make_shared<ElasticSubsteps<D>>(elastic, elastic_p));
     list.push_back(eos);
     stage();
+    if (fluid_push) list.push_back(fluid_push);
+    if (elastic) list.push_back(std::make_shared<ElasticForces<D>>(elastic));
     list.push_back(std::make_shared<MidpointCorrector<D>>());
     if (heat) list.push_back(std::make_shared<TemperatureCorrector<D>>());
-    if (!s.elastic.empty()) list.push_back(std::make_shared<ElasticCorrector<D>>(elastic_p.fluid));
+    if (elastic) list.push_back(std::make_shared<ElasticCorrector<D>>(elastic_p.fluid));
     list.push_back(eos);
   }
   if (s.velocity_smoothing > 0)

@@ -1,5 +1,6 @@
 #include "scene/load_elastic.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -19,6 +20,7 @@ std::vector<double> numbers(const toml::node& n) {
 void load_elastic(toml::table& root, const Validator& val, Scene& sc) {
   sc.solid_alpha = *root["method"]["solid_artificial_viscosity"].value<double>();
   sc.solid_beta = *root["method"]["solid_artificial_viscosity_quadratic"].value<double>();
+  sc.solid_substeps = static_cast<int>(*root["method"]["solid_substeps"].value<std::int64_t>());
   auto* arr = root["elastic"].as_array();
   if (!arr) return;
   const int D = sc.dimension;
@@ -78,6 +80,22 @@ void load_elastic(toml::table& root, const Validator& val, Scene& sc) {
         fail(t["clamp_min"] ? "clamp_min" : "clamp_max", "needs both clamp_min and clamp_max");
       e.clamp_min = numbers(*t["clamp_min"].node());
       e.clamp_max = numbers(*t["clamp_max"].node());
+      // The clamp must hold some of the body's particles (min + (k + 1/2) d), and not all.
+      long held = 1, all = 1;
+      for (int a = 0; a < D; ++a) {
+        const long cells = std::lround((e.max[a] - e.min[a]) / d);
+        long in = 0;
+        for (long k = 0; k < cells; ++k) {
+          const double q = e.min[a] + (k + 0.5) * d;
+          if (q >= e.clamp_min[a] && q <= e.clamp_max[a]) ++in;
+        }
+        held *= in, all *= cells;
+      }
+      if (held == 0)
+        fail("clamp_min", "clamps none of the body's particles (they sit at min + (k + 1/2) spacing): the clamp box "
+                          "must hold at least one of them");
+      if (held == all)
+        fail("clamp_min", "clamps every particle of the body, which could never move: a fixed obstacle is a [[solid]]");
     }
     if (auto* v = t["velocity"].node()) {
       e.initial.velocity.assign(D, 0.0);
@@ -91,17 +109,30 @@ void load_elastic(toml::table& root, const Validator& val, Scene& sc) {
       }
       e.initial.velocity_where = val.location(v, prefix + "velocity");
     }
-    // A fixed step the elastic waves outrun is unstable from the first steps.
-    const double limit = sc.smoothing_length() / e.sound_speed();
+    // A fixed step the elastic waves outrun is unstable from the first steps (substeps: the
+    // solid takes at most solid_substeps of them in one step).
+    const double limit = sc.solid_substeps * sc.smoothing_length() / e.sound_speed();
     if (sc.fixed_dt > limit) {
       std::ostringstream m;
-      m << "[time] dt = " << sc.fixed_dt << " s exceeds " << label
-        << "'s elastic wave step h / c_s = " << limit
+      m << "[time] dt = " << sc.fixed_dt << " s exceeds " << label << "'s elastic wave step "
+        << (sc.solid_substeps > 1 ? "[method] solid_substeps x " : "") << "h / c_s = " << limit
         << " s (c_s = sqrt((K + 4G/3) / rho0) = " << e.sound_speed() << " m/s)";
       val.fail(root["time"]["dt"].node(), "time.dt", m.str());
     }
     sc.elastic.push_back(std::move(e));
   }
+  // Under gravity a free body needs something to rest on: fluid, a wall, a solid or a clamped
+  // body; otherwise it falls until it leaves the domain (a numerical failure, minutes later).
+  const bool g = std::any_of(sc.gravity.begin(), sc.gravity.end(), [](double c) { return c != 0; });
+  const bool support = !sc.fluid.empty() || !sc.imports.empty() || !sc.walls.empty() || !sc.solids.empty() ||
+                       !sc.meshes.empty() ||
+                       std::any_of(sc.elastic.begin(), sc.elastic.end(), [](const ElasticSpec& e) { return e.clamped(); });
+  for (std::size_t i = 0; i < sc.elastic.size() && g && !support; ++i)
+    if (!sc.elastic[i].clamped())
+      val.fail(root["elastic"][i]["min"].node(), "elastic." + std::to_string(i) + ".min",
+               "[[elastic]] #" + std::to_string(i) +
+                   " is free (no clamp_min/clamp_max) under gravity with nothing to rest on (no fluid, [[wall]], "
+                   "[[solid]], mesh or clamped body): clamp it, add a wall, or set [physics] gravity = 0");
 }
 
 }  // namespace ryushi

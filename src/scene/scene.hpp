@@ -98,6 +98,7 @@ struct ElasticSpec {
   double density = 0, bulk_modulus = 0, shear_modulus = 0;
   FluidBlock initial;  // its initial velocity (numbers and formulas), read as a fluid block's
   double sound_speed() const { return std::sqrt((bulk_modulus + 4.0 / 3.0 * shear_modulus) / density); }
+  bool clamped() const { return !clamp_min.empty(); }
 };
 // Fluid particles inside [min, max] at the start hold p = pressure + gradient . x (Dirichlet):
 // the inlet and outlet of an Eulerian ISPH channel.
@@ -208,6 +209,7 @@ struct Scene {
   std::vector<SolidSpec> solids;
   std::vector<ElasticSpec> elastic;
   double solid_alpha = 1.0, solid_beta = 1.0;  // [method] solid_artificial_viscosity(_quadratic)
+  int solid_substeps = 1;                      // [method] solid_substeps
   std::vector<MeshSpec> meshes;
   std::vector<ImportSpec> imports;
   std::vector<FixedPressureBox> fixed_pressure;

@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "ecs/component.hpp"
+#include "ecs/resources.hpp"
 #include "systems/kernels/kernel.hpp"
 #include "systems/neighbour/domain.hpp"
 
@@ -30,6 +31,10 @@ inline constexpr Component<Flags> clamped{"clamped"};             // 1: held in 
 inline constexpr Component<Flags> elastic_body{"elastic_body"};   // the [[elastic]] index (-1: none)
 }  // namespace components
 
+// The solid substeps of the current step (elastic_midpoint.hpp): written by the first stage,
+// read by the final kick.
+inline constexpr Resource<int> elastic_substeps_resource{"elastic_substeps"};
+
 template <int D>
 struct ElasticParameters {
   Kernel<D> kernel{KernelType::WendlandC2, 1.0};
@@ -39,6 +44,10 @@ struct ElasticParameters {
   double alpha = 1.0, beta = 1.0;  // artificial viscosity A, B (seed 002: A = B = 1)
   double max_sound_speed = 0;      // sqrt((K + 4G/3)/rho0), the largest body's (time step)
   bool fluid = false;              // the fluid pushes on the solid (fluid_force)
+  // The solid's own step limit (cfl h / c_s) and the most substeps it may take in one step of
+  // the fluid ([method] solid_substeps; 1: the step itself keeps the solid's limit).
+  double substep_limit = 0;
+  int max_substeps = 1;
   double volume() const {
     double v = 1;
     for (int a = 0; a < D; ++a) v *= spacing;

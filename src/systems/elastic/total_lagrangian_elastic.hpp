@@ -18,6 +18,8 @@
 // Contact: particles of another body or of a wall closer than the spacing d push apart with
 // (c_s^2 / d)(1 - r/d) along x_ij (c_s = sqrt((K + 4G/3)/rho0)), with the same viscosity.
 // Clamped particles get no acceleration.
+// This is the force model, not a system: the integration systems (elastic_midpoint.hpp) call it
+// once per solid (sub)step and declare what it reads and writes (declare()).
 #include <tbb/parallel_for.h>
 
 #include <array>
@@ -35,22 +37,19 @@
 namespace ryushi {
 
 template <int D>
-class TotalLagrangianElastic final : public System<D> {
+class TotalLagrangianElasticity {
  public:
-  explicit TotalLagrangianElastic(const ElasticParameters<D>& p) : p_(p) {}
-  std::string name() const override { return "elastic_total_lagrangian"; }
-  Access access() const override {
-    Access a;
+  explicit TotalLagrangianElasticity(const ElasticParameters<D>& p) : p_(p) {}
+  static void declare(Access& a) {
     a.read(components::position, components::velocity, components::kind, components::id,
            components::rest_position, components::solid_rest_density, components::bulk_modulus,
            components::shear_modulus, components::clamped, components::elastic_body, neighbours_resource)
         .write(components::acceleration, components::stress, components::solid_density,
                components::solid_pressure, components::strain_energy);
-    return a;
   }
   // The rest configuration: each elastic particle's neighbours within the support among the
   // particles of its own body (by id, so reordering cannot change them) and its B.
-  void initialise(World<D>& world, Resources&) override {
+  void initialise(World<D>& world) {
     auto& kind = world.column(components::kind);
     auto& id = world.column(components::id);
     auto& X = world.column(components::rest_position);
@@ -100,10 +99,20 @@ class TotalLagrangianElastic final : public System<D> {
       offsets_.push_back(neighbour_.size());
       if (M.determinant() > kMinRenormalisationDeterminant) B_[k] = M.inverse();
     }
+    // The corrected gradients B_i V0_j grad0 W_ij of the deformation gradient, kept.
+    corrected_.resize(gradient_.size());
+    for (std::size_t k = 0; k < n; ++k)
+      for (std::size_t e = offsets_[k]; e < offsets_[k + 1]; ++e) corrected_[e] = B_[k] * gradient_[e];
     PB_.assign(n, Mat<D>::Zero());
     version_ = ~std::uint64_t(0);
   }
-  void run(SystemContext<D>& ctx) override {
+  // Whether the accelerations in the column are this model's at the current positions (the
+  // integration's first substep reuses the last step's).
+  bool current() const { return current_; }
+  void set_current(bool c) { current_ = c; }
+  // The accelerations, stress, density and strain energy of every elastic particle at the
+  // current positions and velocities.
+  void evaluate(SystemContext<D>& ctx) {
     auto x = ctx.read(components::position);
     auto v = ctx.read(components::velocity);
     auto kind = ctx.read(components::kind);
@@ -140,7 +149,7 @@ class TotalLagrangianElastic final : public System<D> {
         const std::size_t i = index_[k];
         Mat<D> F = Mat<D>::Zero();
         for (std::size_t e = offsets_[k]; e < offsets_[k + 1]; ++e)
-          F += (x[index_[neighbour_[e]]] - x[i]) * (B_[k] * gradient_[e]).transpose();
+          F += (x[index_[neighbour_[e]]] - x[i]) * corrected_[e].transpose();
         const Mat<D> E = 0.5 * (F.transpose() * F - Mat<D>::Identity());
         const double lambda = K[i] - 2.0 / 3.0 * G[i];
         const Mat<D> S = lambda * E.trace() * Mat<D>::Identity() + 2.0 * G[i] * E;
@@ -191,6 +200,7 @@ class TotalLagrangianElastic final : public System<D> {
         a[i] = acc + p_.gravity;
       }
     });
+    current_ = true;
   }
 
  private:
@@ -205,10 +215,12 @@ class TotalLagrangianElastic final : public System<D> {
   std::vector<std::size_t> offsets_;      // slot k's rest neighbours: [offsets_[k], offsets_[k + 1])
   std::vector<std::uint32_t> neighbour_;  // their slots
   std::vector<Vec<D>> gradient_;          // V0_j grad0 W_ij
+  std::vector<Vec<D>> corrected_;         // B_i V0_j grad0 W_ij
   std::vector<Mat<D>> B_, PB_;
   std::vector<std::size_t> index_;  // slot -> world index
   std::vector<std::int64_t> slot_of_id_;
   std::uint64_t version_ = ~std::uint64_t(0);
+  bool current_ = false;
 };
 
 }  // namespace ryushi

@@ -24,7 +24,8 @@ struct WcsphParameters {
   bool wall_no_slip = true;
   bool wall_acceleration = false;  // some body moves: Adami's wall pressure takes its acceleration
   bool elastic_bodies = false;     // [[elastic]] particles: moving walls to the fluid (Adami's rows)
-  double solid_sound_speed = 0;    // the stiffest elastic body's sqrt((K + 4G/3)/rho0): a step limit
+  double solid_sound_speed = 0;    // the stiffest elastic body's sqrt((K + 4G/3)/rho0) over [method]
+                                   // solid_substeps: a step limit
 
   bool viscous() const { return mu > 0 || variable_viscosity; }  // the laminar viscous term is on
 
