@@ -73,7 +73,7 @@ set_tests_properties("leapfrog: one force evaluation per step, the dam-break cri
 set_tests_properties("energy: a WCSPH sloshing tank with the leapfrog integrator never gains energy and keeps the linear period"
                      PROPERTIES LABELS slow COST 14)
 set_tests_properties("elastic: a clamped plate swings at the Euler-Bernoulli period within 5% at H/d = 16 and 20"
-                     PROPERTIES LABELS slow COST 65)
-set_tests_properties("elastic: the plate keeps its energy over ten periods" PROPERTIES LABELS slow COST 26)
+                     PROPERTIES LABELS slow COST 50)
+set_tests_properties("elastic: the plate keeps its energy over ten periods" PROPERTIES LABELS slow COST 20)
 set_tests_properties("elastic: seed 002's drifting block hits the elastic plate, goes over it and the run holds to t = 0.5 s"
                      PROPERTIES LABELS slow COST 25)

@@ -95,7 +95,12 @@ void populate_world(const Scene& s, const WcsphParameters<D>& p, World<D>& world
 }
 
 template <int D>
-std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D>& p) {
+std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D>& p, const World<D>& world) {
+  // A scene of elastic bodies alone pays for no fluid system, and a lone body without walls for
+  // no contact loop.
+  const auto& kinds = world.column(components::kind);
+  const bool has_fluid = std::find(kinds.begin(), kinds.end(), kFluid) != kinds.end();
+  const bool has_walls = std::find(kinds.begin(), kinds.end(), kWall) != kinds.end();
   auto neighbours = std::make_shared<NeighbourSearch<D>>(p.kernel.support(), kWall, s.neighbour_skin * s.spacing);
   auto wall = std::make_shared<AdamiWall<D>>(p);
   auto gradient = std::make_shared<RenormalisedDensityGradient<D>>(p);
@@ -112,7 +117,8 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
 
   // The solid's force model keeps the bodies' rest neighbours; its substeps (first stage) and
   // its forces at the end of the step (second stage) share it.
-  const auto elastic_p = elastic_parameters<D>(s, p.kernel, p.domain, s.step_rule == "seed001" ? 0.1 : s.cfl);
+  auto elastic_p = elastic_parameters<D>(s, p.kernel, p.domain, s.step_rule == "seed001" ? 0.1 : s.cfl);
+  elastic_p.contacts = has_walls || s.elastic.size() > 1;
   std::shared_ptr<TotalLagrangianElasticity<D>> elastic;
   SystemPtr<D> fluid_push;  // the fluid's force on the solid (second stage: the final kick's)
   if (!s.elastic.empty()) {
@@ -122,6 +128,7 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
 
   std::vector<SystemPtr<D>> list{neighbours};
   auto stage = [&] {
+    if (!has_fluid) return;
     if (walls) list.push_back(wall);
     if (p.delta > 0) list.push_back(gradient);
     if (rheology) list.push_back(rheology);
@@ -175,7 +182,7 @@ MethodSetup<D> build_wcsph(const Scene& s, World<D>& world, const PipelineOption
   if (p.variable_viscosity) p.mu = viscosity_at_rest<D>(s, world);
   MethodSetup<D> m;
   m.context = method_context<D>(s, p.kernel);
-  m.pipeline = wcsph_pipeline<D>(s, p);
+  m.pipeline = wcsph_pipeline<D>(s, p, world);
   m.first_dt =
       TimeStepControl<D>(p, s.cfl, thermal_step_limit<D>(s, p), s.step_rule == "seed001").limit(0.0, p.gravity.norm());
   if (s.models_heat()) m.frame_fields.push_back("temperature");

@@ -43,7 +43,7 @@ class ElasticSubsteps final : public System<D> {
   std::string name() const override { return "elastic_substeps"; }
   Access access() const override {
     Access a;
-    TotalLagrangianElasticity<D>::declare(a);
+    model_->declare(a);
     a.read(resources::dt, domain_resource<D>)
         .write(components::position, components::velocity, elastic_substeps_resource);
     return a;
@@ -106,7 +106,7 @@ class ElasticForces final : public System<D> {
   std::string name() const override { return "elastic_total_lagrangian"; }
   Access access() const override {
     Access a;
-    TotalLagrangianElasticity<D>::declare(a);
+    model_->declare(a);
     return a;
   }
   void run(SystemContext<D>& ctx) override { model_->evaluate(ctx); }

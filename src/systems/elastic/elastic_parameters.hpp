@@ -44,6 +44,7 @@ struct ElasticParameters {
   double alpha = 1.0, beta = 1.0;  // artificial viscosity A, B (seed 002: A = B = 1)
   double max_sound_speed = 0;      // sqrt((K + 4G/3)/rho0), the largest body's (time step)
   bool fluid = false;              // the fluid pushes on the solid (fluid_force)
+  bool contacts = true;            // walls or other bodies to touch (else no contact search)
   // The solid's own step limit (cfl h / c_s) and the most substeps it may take in one step of
   // the fluid ([method] solid_substeps; 1: the step itself keeps the solid's limit).
   double substep_limit = 0;

@@ -40,12 +40,13 @@ template <int D>
 class TotalLagrangianElasticity {
  public:
   explicit TotalLagrangianElasticity(const ElasticParameters<D>& p) : p_(p) {}
-  static void declare(Access& a) {
+  void declare(Access& a) const {
     a.read(components::position, components::velocity, components::kind, components::id,
            components::rest_position, components::solid_rest_density, components::bulk_modulus,
-           components::shear_modulus, components::clamped, components::elastic_body, neighbours_resource)
+           components::shear_modulus, components::clamped, components::elastic_body)
         .write(components::acceleration, components::stress, components::solid_density,
                components::solid_pressure, components::strain_energy);
+    if (p_.contacts) a.read(neighbours_resource);
   }
   // The rest configuration: each elastic particle's neighbours within the support among the
   // particles of its own body (by id, so reordering cannot change them) and its B.
@@ -122,7 +123,7 @@ class TotalLagrangianElasticity {
     auto G = ctx.read(components::shear_modulus);
     auto clamped = ctx.read(components::clamped);
     auto body = ctx.read(components::elastic_body);
-    const auto& nl = ctx.read(neighbours_resource);
+    const NeighbourList* nl = p_.contacts ? &ctx.read(neighbours_resource) : nullptr;
     auto a = ctx.write(components::acceleration);
     auto sigma = ctx.write(components::stress);
     auto rho = ctx.write(components::solid_density);
@@ -184,19 +185,20 @@ class TotalLagrangianElasticity {
                    p_.kernel.grad_factor(std::sqrt(r2)) * xij;
         }
         // Contact with walls and other bodies: a stiff spring inside the spacing, and viscosity.
-        for (auto j : nl.of(i)) {
-          const bool wall = kind[j] == kWall;
-          if (!wall && !(kind[j] == kElastic && body[j] != body[i])) continue;
-          const Vec<D> xij = p_.domain.displacement(x[i], x[j]);
-          const double r2 = xij.squaredNorm();
-          if (r2 >= d * d) continue;
-          const double r = std::sqrt(r2);
-          acc += (c * c / d) * (1.0 - r / d) / r * xij;
-          const double vx = (v[i] - v[j]).dot(xij);
-          if (vx < 0)
-            acc -= rho0[i] * volume * viscosity(vx, r2, eta2, c, rho[i], rho[i]) * p_.kernel.grad_factor(r) *
-                   xij;
-        }
+        if (nl)
+          for (auto j : nl->of(i)) {
+            const bool wall = kind[j] == kWall;
+            if (!wall && !(kind[j] == kElastic && body[j] != body[i])) continue;
+            const Vec<D> xij = p_.domain.displacement(x[i], x[j]);
+            const double r2 = xij.squaredNorm();
+            if (r2 >= d * d) continue;
+            const double r = std::sqrt(r2);
+            acc += (c * c / d) * (1.0 - r / d) / r * xij;
+            const double vx = (v[i] - v[j]).dot(xij);
+            if (vx < 0)
+              acc -= rho0[i] * volume * viscosity(vx, r2, eta2, c, rho[i], rho[i]) * p_.kernel.grad_factor(r) *
+                     xij;
+          }
         a[i] = acc + p_.gravity;
       }
     });
