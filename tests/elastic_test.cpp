@@ -77,6 +77,38 @@ youngs_modulus = 1.0e6
 poisson_ratio = 0.3
 )";
 
+// A 5 x 5 cm block (E = 1 MPa, nu = 0.3, rho = 1000) on the floor of a tank, under gravity.
+const std::string kBlockOnWall = R"([scene]
+dimension = 2
+[domain]
+min = [-0.05, -0.05]
+max = [0.15, 0.15]
+[particles]
+spacing = 0.005
+[method]
+name = "wcsph"
+[time]
+end = 0.5
+[output]
+interval = 0.25
+probe_interval = 0.01
+[[wall]]
+min = [0.0, 0.0]
+max = [0.1, 0.1]
+[[elastic]]
+name = "block"
+min = [0.025, 0.0]
+max = [0.075, 0.05]
+density = 1000.0
+youngs_modulus = 1.0e6
+poisson_ratio = 0.3
+[[probe]]
+name = "top_y"
+type = "solid_displacement"
+position = [0.05, 0.05]
+axis = 1
+)";
+
 }  // namespace
 
 TEST_CASE("elastic: a clamped plate swings at the Euler-Bernoulli period within 5% at H/d = 16 and 20") {
@@ -126,36 +158,7 @@ TEST_CASE("elastic: the plate keeps its energy over ten periods") {
 TEST_CASE("elastic: a block at rest on a wall settles by its own weight and keeps its shape") {
   // A 5 x 5 cm block (E = 1 MPa, nu = 0.3, rho = 1000) on the floor of a tank, under gravity. Its
   // top settles by rho g H^2 / (2 E'), E' = E / (1 - nu^2) (plane strain, free sides): 1.12e-5 m.
-  const std::string text = R"([scene]
-dimension = 2
-[domain]
-min = [-0.05, -0.05]
-max = [0.15, 0.15]
-[particles]
-spacing = 0.005
-[method]
-name = "wcsph"
-[time]
-end = 0.5
-[output]
-interval = 0.25
-probe_interval = 0.01
-[[wall]]
-min = [0.0, 0.0]
-max = [0.1, 0.1]
-[[elastic]]
-name = "block"
-min = [0.025, 0.0]
-max = [0.075, 0.05]
-density = 1000.0
-youngs_modulus = 1.0e6
-poisson_ratio = 0.3
-[[probe]]
-name = "top_y"
-type = "solid_displacement"
-position = [0.05, 0.05]
-axis = 1
-)";
+  const std::string text = kBlockOnWall;
   auto dir = test::unique_scratch("elastic_block");
   test::write_text(dir / "block.toml", text);
   const auto out = run((dir / "block.toml").string(), "", "elastic_block_run");
@@ -171,6 +174,34 @@ axis = 1
   CHECK(largest < 0.01 * 0.05);
 }
 
+TEST_CASE("elastic: seed 002's updated form keeps a block on a wall and swings the plate, softer than the total Lagrangian form") {
+  // The seed's own form (continuity, Jaumann rate, artificial stress; updated_lagrangian_elastic.hpp)
+  // at H/d = 10, against the analytic values the total Lagrangian form meets within 2% and 7.6%.
+  // Measured: the block's top settles 1.19x the analytic 1.12e-5 m (its shape kept: largest
+  // displacement 0.03% of its height), the plate's half period is 16.9% long: the sums, cut at
+  // the free surfaces, lose stiffness there (11.3% at H/d = 20, docs/multiphysics.md).
+  auto dir = test::unique_scratch("elastic_updated");
+  test::write_text(dir / "block.toml", kBlockOnWall);
+  const std::string updated = "--set method.solid_formulation=\"updated\"";
+  const auto block = run((dir / "block.toml").string(), updated, "elastic_updated_block");
+  auto csv = test::read_csv(std::filesystem::path(block) / "probes.csv");
+  const double settle = -csv["top_y"].back() / (1000 * 9.81 * 0.05 * 0.05 / (2 * 1e6 / (1 - 0.09)));
+  auto u = test::read_dataset(test::last_frame(block), "displacement").values;
+  auto kind = test::read_dataset(test::last_frame(block), "kind").values;
+  double largest = 0;
+  for (std::size_t i = 0; i < kind.size(); ++i)
+    if (kind[i] == 3) largest = std::max(largest, std::hypot(u[3 * i], u[3 * i + 1]));
+  const auto plate = run(test::scene_path("elastic_plate_2d.toml"), updated + " --set time.end=0.15", "elastic_updated_plate");
+  const double error = first_return(std::filesystem::path(plate) / "probes.csv") / (0.5 * euler_bernoulli_period()) - 1;
+  MESSAGE("block settles ", settle, " x the analytic, largest displacement ", largest / 0.05,
+          " of its height; plate half period ", 100 * error, "% long");
+  CHECK(largest < 0.01 * 0.05);            // the issue's criterion for a block at rest
+  CHECK(settle > 1.0);                     // softer than Hooke's law ...
+  CHECK(settle < 1.3);                     // ... by the measured 19% and a margin
+  CHECK(error > 0.076);                    // longer than the total Lagrangian form's 7.6%
+  CHECK(error < 0.2);                      // the measured 16.9% and a margin
+}
+
 TEST_CASE("elastic: water hitting an elastic block exchanges momentum and keeps the total") {
   // The fluid feels the solid's particles as moving walls, the solid the reaction pair by pair,
   // so the total momentum (fluid m v plus solid rho0 d^2 v) is kept to round-off while the solid
@@ -181,9 +212,11 @@ TEST_CASE("elastic: water hitting an elastic block exchanges momentum and keeps 
   auto dir = test::unique_scratch("elastic_momentum");
   test::write_text(dir / "hit.toml", kWaterIntoBlock);
   double share[2] = {0, 0};
-  for (int substeps : {1, 4}) {
-    const auto out = run((dir / "hit.toml").string(), "--set method.solid_substeps=" + std::to_string(substeps),
-                         "elastic_momentum_run");
+  // Third: seed 002's updated form, whose forces differ but whose exchange with the water is the same.
+  for (int substeps : {1, 4, 0}) {
+    const std::string sets = substeps ? "--set method.solid_substeps=" + std::to_string(substeps)
+                                      : "--set method.solid_formulation=\"updated\"";
+    const auto out = run((dir / "hit.toml").string(), sets, "elastic_momentum_run");
     auto momentum = [&](int frame, double* solid) {
       char name[32];
       std::snprintf(name, sizeof name, "frame_%05d.h5", frame);
@@ -200,12 +233,13 @@ TEST_CASE("elastic: water hitting an elastic block exchanges momentum and keeps 
     };
     double solid0 = 0, solid = 0;
     const double p0 = momentum(0, &solid0), p = momentum(2, &solid);
-    MESSAGE("solid_substeps = ", substeps, ": momentum ", p0, " -> ", p, " kg m/s per m; the solid's ", solid0,
+    const std::string label = substeps ? "solid_substeps = " + std::to_string(substeps) : "updated form";
+    MESSAGE(label, ": momentum ", p0, " -> ", p, " kg m/s per m; the solid's ", solid0,
             " -> ", solid);
     CHECK(solid0 == 0.0);
     CHECK(solid > 0.2 * p0);
     CHECK(std::abs(p - p0) < 1e-10 * p0);
-    share[substeps == 1 ? 0 : 1] = solid / p0;
+    if (substeps) share[substeps == 1 ? 0 : 1] = solid / p0;
   }
   // The solid's share (0.380) moves by 1.3e-4 with the substeps (measured): the steps differ, the
   // physics not; a push entered per substep instead of once would double it.

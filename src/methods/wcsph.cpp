@@ -23,6 +23,7 @@
 #include "systems/elastic/elastic_midpoint.hpp"
 #include "systems/elastic/fluid_on_solid.hpp"
 #include "systems/elastic/total_lagrangian_elastic.hpp"
+#include "systems/elastic/updated_lagrangian_elastic.hpp"
 #include "systems/fluid/xsph_velocity_smoothing.hpp"
 #include "systems/integrate/leapfrog.hpp"
 #include "systems/integrate/midpoint.hpp"
@@ -119,10 +120,13 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
   // its forces at the end of the step (second stage) share it.
   auto elastic_p = elastic_parameters<D>(s, p.kernel, p.domain, s.step_rule == "seed001" ? 0.1 : s.cfl);
   elastic_p.contacts = has_walls || s.elastic.size() > 1;
-  std::shared_ptr<TotalLagrangianElasticity<D>> elastic;
+  std::shared_ptr<ElasticModel<D>> elastic;
   SystemPtr<D> fluid_push;  // the fluid's force on the solid (second stage: the final kick's)
   if (!s.elastic.empty()) {
-    elastic = std::make_shared<TotalLagrangianElasticity<D>>(elastic_p);
+    if (s.solid_formulation == "updated")
+      elastic = std::make_shared<UpdatedLagrangianElasticity<D>>(elastic_p);
+    else
+      elastic = std::make_shared<TotalLagrangianElasticity<D>>(elastic_p);
     if (elastic_p.fluid) fluid_push = std::make_shared<FluidOnSolid<D>>(p, elastic_p.volume());
   }
 

@@ -21,6 +21,8 @@ void load_elastic(toml::table& root, const Validator& val, Scene& sc) {
   sc.solid_alpha = *root["method"]["solid_artificial_viscosity"].value<double>();
   sc.solid_beta = *root["method"]["solid_artificial_viscosity_quadratic"].value<double>();
   sc.solid_substeps = static_cast<int>(*root["method"]["solid_substeps"].value<std::int64_t>());
+  sc.solid_formulation = *root["method"]["solid_formulation"].value<std::string>();
+  sc.solid_artificial_stress = *root["method"]["solid_artificial_stress"].value<double>();
   auto* arr = root["elastic"].as_array();
   if (!arr) return;
   const int D = sc.dimension;

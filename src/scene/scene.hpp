@@ -210,6 +210,8 @@ struct Scene {
   std::vector<ElasticSpec> elastic;
   double solid_alpha = 1.0, solid_beta = 1.0;  // [method] solid_artificial_viscosity(_quadratic)
   int solid_substeps = 1;                      // [method] solid_substeps
+  std::string solid_formulation = "total_lagrangian";  // [method] solid_formulation
+  double solid_artificial_stress = 0.3;               // [method] solid_artificial_stress
   std::vector<MeshSpec> meshes;
   std::vector<ImportSpec> imports;
   std::vector<FixedPressureBox> fixed_pressure;

@@ -5,10 +5,12 @@
 // measured: an oscillating plate without artificial viscosity blew up within 0.15 s), in m
 // substeps of length dt_s = dt / m:
 //   first stage (ElasticSubsteps), with a^n the forces at x^n (the previous step's last):
-//     m - 1 whole substeps  v += dt_s/2 a, x += dt_s v, a = a(x, v), v += dt_s/2 a,
-//     then the last one's   v += dt_s/2 a, x += dt_s v                    (x^{n+1})
+//     m - 1 whole substeps  v += dt_s/2 a, x += dt_s v, q += dt_s q', a = a(x, v, q), v += dt_s/2 a,
+//     then the last one's   v += dt_s/2 a, x += dt_s v, q += dt_s q'     (x^{n+1})
+//   (q: the force model's own state, if it has one: the updated form's density and deviatoric
+//   stress, advanced with the rates of the last evaluation)
 //   second stage (ElasticForces, then ElasticCorrector), with the fluid at t^{n+1/2}:
-//     a = a(x^{n+1}, v),  v^{n+1} = v + dt_s/2 a + dt f
+//     a = a(x^{n+1}, v, q),  v^{n+1} = v + dt_s/2 a + dt f
 // Velocity Verlet evaluates the forces once per substep: a step's first substep starts from the
 // forces its predecessor's second stage computed at the same positions (only the artificial
 // viscosity's velocities differ from a fresh evaluation: v^{n-1/2} for v^n, as velocity Verlet
@@ -29,7 +31,7 @@
 
 #include "ecs/system.hpp"
 #include "systems/elastic/elastic_parameters.hpp"
-#include "systems/elastic/total_lagrangian_elastic.hpp"
+#include "systems/elastic/elastic_model.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/neighbour/domain.hpp"
 
@@ -38,7 +40,7 @@ namespace ryushi {
 template <int D>
 class ElasticSubsteps final : public System<D> {
  public:
-  ElasticSubsteps(std::shared_ptr<TotalLagrangianElasticity<D>> model, const ElasticParameters<D>& p)
+  ElasticSubsteps(std::shared_ptr<ElasticModel<D>> model, const ElasticParameters<D>& p)
       : model_(std::move(model)), p_(p) {}
   std::string name() const override { return "elastic_substeps"; }
   Access access() const override {
@@ -82,6 +84,7 @@ class ElasticSubsteps final : public System<D> {
         x[i] += h * v[i];
         if (domain.any_periodic()) domain.wrap(x[i]);
       });
+      model_->advance(ctx, h);
     }
     model_->set_current(false);
   }
@@ -94,7 +97,7 @@ class ElasticSubsteps final : public System<D> {
   }
 
  private:
-  std::shared_ptr<TotalLagrangianElasticity<D>> model_;
+  std::shared_ptr<ElasticModel<D>> model_;
   ElasticParameters<D> p_;
 };
 
@@ -102,7 +105,7 @@ class ElasticSubsteps final : public System<D> {
 template <int D>
 class ElasticForces final : public System<D> {
  public:
-  explicit ElasticForces(std::shared_ptr<TotalLagrangianElasticity<D>> model) : model_(std::move(model)) {}
+  explicit ElasticForces(std::shared_ptr<ElasticModel<D>> model) : model_(std::move(model)) {}
   std::string name() const override { return "elastic_total_lagrangian"; }
   Access access() const override {
     Access a;
@@ -112,7 +115,7 @@ class ElasticForces final : public System<D> {
   void run(SystemContext<D>& ctx) override { model_->evaluate(ctx); }
 
  private:
-  std::shared_ptr<TotalLagrangianElasticity<D>> model_;
+  std::shared_ptr<ElasticModel<D>> model_;
 };
 
 template <int D>

@@ -18,8 +18,8 @@
 // Contact: particles of another body or of a wall closer than the spacing d push apart with
 // (c_s^2 / d)(1 - r/d) along x_ij (c_s = sqrt((K + 4G/3)/rho0)), with the same viscosity.
 // Clamped particles get no acceleration.
-// This is the force model, not a system: the integration systems (elastic_midpoint.hpp) call it
-// once per solid (sub)step and declare what it reads and writes (declare()).
+// This is a force model, not a system (elastic_model.hpp): the integration systems
+// (elastic_midpoint.hpp) call it once per solid (sub)step.
 #include <tbb/parallel_for.h>
 
 #include <array>
@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "ecs/lattice.hpp"
+#include "systems/elastic/elastic_model.hpp"
 #include "ecs/system.hpp"
 #include "systems/elastic/elastic_parameters.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
@@ -37,10 +38,10 @@
 namespace ryushi {
 
 template <int D>
-class TotalLagrangianElasticity {
+class TotalLagrangianElasticity final : public ElasticModel<D> {
  public:
   explicit TotalLagrangianElasticity(const ElasticParameters<D>& p) : p_(p) {}
-  void declare(Access& a) const {
+  void declare(Access& a) const override {
     a.read(components::position, components::velocity, components::kind, components::id,
            components::rest_position, components::solid_rest_density, components::bulk_modulus,
            components::shear_modulus, components::clamped, components::elastic_body)
@@ -50,7 +51,7 @@ class TotalLagrangianElasticity {
   }
   // The rest configuration: each elastic particle's neighbours within the support among the
   // particles of its own body (by id, so reordering cannot change them) and its B.
-  void initialise(World<D>& world) {
+  void initialise(World<D>& world) override {
     auto& kind = world.column(components::kind);
     auto& id = world.column(components::id);
     auto& X = world.column(components::rest_position);
@@ -107,13 +108,7 @@ class TotalLagrangianElasticity {
     PB_.assign(n, Mat<D>::Zero());
     version_ = ~std::uint64_t(0);
   }
-  // Whether the accelerations in the column are this model's at the current positions (the
-  // integration's first substep reuses the last step's).
-  bool current() const { return current_; }
-  void set_current(bool c) { current_ = c; }
-  // The accelerations, stress, density and strain energy of every elastic particle at the
-  // current positions and velocities.
-  void evaluate(SystemContext<D>& ctx) {
+  void evaluate(SystemContext<D>& ctx) override {
     auto x = ctx.read(components::position);
     auto v = ctx.read(components::velocity);
     auto kind = ctx.read(components::kind);
@@ -163,7 +158,6 @@ class TotalLagrangianElasticity {
         energy[i] = volume * (0.5 * lambda * E.trace() * E.trace() + G[i] * E.squaredNorm());
       }
     });
-    const double h = p_.kernel.h(), eta2 = 0.01 * h * h, d = p_.spacing;
     const double support2 = p_.kernel.support() * p_.kernel.support();
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](auto range) {
       for (std::size_t k = range.begin(); k != range.end(); ++k) {
@@ -181,37 +175,17 @@ class TotalLagrangianElasticity {
           const Vec<D> xij = p_.domain.displacement(x[i], x[j]), vij = v[i] - v[j];
           const double vx = vij.dot(xij), r2 = xij.squaredNorm();
           if (vx < 0 && r2 < support2)
-            acc -= rho0[j] * volume * viscosity(vx, r2, eta2, c, rho[i], rho[j]) *
+            acc -= rho0[j] * volume * solid_viscosity(p_, vx, r2, c, rho[i], rho[j]) *
                    p_.kernel.grad_factor(std::sqrt(r2)) * xij;
         }
-        // Contact with walls and other bodies: a stiff spring inside the spacing, and viscosity.
-        if (nl)
-          for (auto j : nl->of(i)) {
-            const bool wall = kind[j] == kWall;
-            if (!wall && !(kind[j] == kElastic && body[j] != body[i])) continue;
-            const Vec<D> xij = p_.domain.displacement(x[i], x[j]);
-            const double r2 = xij.squaredNorm();
-            if (r2 >= d * d) continue;
-            const double r = std::sqrt(r2);
-            acc += (c * c / d) * (1.0 - r / d) / r * xij;
-            const double vx = (v[i] - v[j]).dot(xij);
-            if (vx < 0)
-              acc -= rho0[i] * volume * viscosity(vx, r2, eta2, c, rho[i], rho[i]) * p_.kernel.grad_factor(r) *
-                     xij;
-          }
+        if (nl) add_solid_contact<D>(p_, *nl, i, c, rho0[i], rho[i], kind, body, x, v, acc);
         a[i] = acc + p_.gravity;
       }
     });
-    current_ = true;
+    this->current_ = true;
   }
 
  private:
-  // Pi_ij (seed 002 eqs. 23-24) for an approaching pair (v_ij . x_ij < 0).
-  double viscosity(double vx, double r2, double eta2, double c, double rhoi, double rhoj) const {
-    const double mu = p_.kernel.h() * vx / (r2 + eta2);
-    return (-p_.alpha * c * mu + p_.beta * mu * mu) / (0.5 * (rhoi + rhoj));
-  }
-
   ElasticParameters<D> p_;
   std::vector<std::int32_t> ids_;         // the elastic particles, by id (slot k)
   std::vector<std::size_t> offsets_;      // slot k's rest neighbours: [offsets_[k], offsets_[k + 1])
@@ -222,7 +196,6 @@ class TotalLagrangianElasticity {
   std::vector<std::size_t> index_;  // slot -> world index
   std::vector<std::int64_t> slot_of_id_;
   std::uint64_t version_ = ~std::uint64_t(0);
-  bool current_ = false;
 };
 
 }  // namespace ryushi
