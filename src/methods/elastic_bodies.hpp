@@ -70,6 +70,7 @@ ElasticParameters<D> elastic_parameters(const Scene& s, const Kernel<D>& kernel,
   p.alpha = s.solid_alpha;
   p.beta = s.solid_beta;
   p.artificial_stress = s.solid_artificial_stress;
+  p.seed_walls = s.solid_walls == "seed";
   for (auto& e : s.elastic) p.max_sound_speed = std::max(p.max_sound_speed, e.sound_speed());
   p.fluid = !s.fluid.empty() || !s.imports.empty();
   p.max_substeps = s.solid_substeps;

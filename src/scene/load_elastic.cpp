@@ -23,6 +23,11 @@ void load_elastic(toml::table& root, const Validator& val, Scene& sc) {
   sc.solid_substeps = static_cast<int>(*root["method"]["solid_substeps"].value<std::int64_t>());
   sc.solid_formulation = *root["method"]["solid_formulation"].value<std::string>();
   sc.solid_artificial_stress = *root["method"]["solid_artificial_stress"].value<double>();
+  sc.solid_walls = *root["method"]["solid_walls"].value<std::string>();
+  if (sc.solid_walls == "seed" && sc.solid_formulation != "updated")
+    val.fail(root["method"]["solid_walls"].node(), "method.solid_walls",
+             "solid_walls = \"seed\" (seed 002 eq. 28) is for solid_formulation = \"updated\": the total "
+             "Lagrangian form's sums run over the rest configuration, where walls have no place");
   auto* arr = root["elastic"].as_array();
   if (!arr) return;
   const int D = sc.dimension;

@@ -212,6 +212,7 @@ struct Scene {
   int solid_substeps = 1;                      // [method] solid_substeps
   std::string solid_formulation = "total_lagrangian";  // [method] solid_formulation
   double solid_artificial_stress = 0.3;               // [method] solid_artificial_stress
+  std::string solid_walls = "contact";                // [method] solid_walls
   std::vector<MeshSpec> meshes;
   std::vector<ImportSpec> imports;
   std::vector<FixedPressureBox> fixed_pressure;

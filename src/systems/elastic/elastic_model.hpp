@@ -43,15 +43,16 @@ double solid_viscosity(const ElasticParameters<D>& p, double vx, double r2, doub
   return (-p.alpha * c * mu + p.beta * mu * mu) / (0.5 * (rhoi + rhoj));
 }
 
-// Adds the push of walls and other bodies on solid particle i (of sound speed c) to acc: a stiff
-// spring (c^2 / d)(1 - r/d) along x_ij inside the spacing d, and the artificial viscosity.
+// Adds the push of walls (unless walls is false) and other bodies on solid particle i (of sound
+// speed c) to acc: a stiff spring (c^2 / d)(1 - r/d) along x_ij inside the spacing d, and the
+// artificial viscosity.
 template <int D, class Kinds, class Bodies, class Positions, class Velocities>
 void add_solid_contact(const ElasticParameters<D>& p, const NeighbourList& nl, std::size_t i, double c, double rho0,
                        double rho, const Kinds& kind, const Bodies& body, const Positions& x, const Velocities& v,
-                       Vec<D>& acc) {
+                       Vec<D>& acc, bool walls = true) {
   const double d = p.spacing, volume = p.volume();
   for (auto j : nl.of(i)) {
-    const bool wall = kind[j] == kWall;
+    const bool wall = walls && kind[j] == kWall;
     if (!wall && !(kind[j] == kElastic && body[j] != body[i])) continue;
     const Vec<D> xij = p.domain.displacement(x[i], x[j]);
     const double r2 = xij.squaredNorm();

@@ -43,6 +43,7 @@ struct ElasticParameters {
   double spacing = 1;              // d: each solid particle's volume is d^D
   double alpha = 1.0, beta = 1.0;  // artificial viscosity A, B (seed 002: A = B = 1)
   double artificial_stress = 0.3;  // eps of the updated form's artificial stress (seed 002 eq. 26)
+  bool seed_walls = false;         // updated form: walls by seed 002's eq. 28, not contact springs
   double max_sound_speed = 0;      // sqrt((K + 4G/3)/rho0), the largest body's (time step)
   bool fluid = false;              // the fluid pushes on the solid (fluid_force)
   bool contacts = true;            // walls or other bodies to touch (else no contact search)

@@ -21,8 +21,10 @@
 // at 20 (the total Lagrangian form: +7.6%, +2.8%), a block on a wall settles 19% too far, and
 // the plate's pressure noise grows (rms 205 -> 1,776 Pa over 0.6 s): the sums, cut at the free
 // surfaces, under-represent the stress there. Kept for comparison with the seed; not the default.
-// Contact with walls and other bodies and the artificial viscosity are the total Lagrangian
-// form's (elastic_model.hpp). Clamped particles get no acceleration; their stress still evolves.
+// Contact with other bodies and the artificial viscosity are the total Lagrangian form's
+// (elastic_model.hpp); walls either push with the same contact springs, or ([method] solid_walls
+// = "seed") enter the momentum sum as particles at rest with the pressure of seed 002's eq. 28
+// interpolated from the solid (section 4.1). Clamped particles get no acceleration; their stress still evolves.
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Eigenvalues>
@@ -90,6 +92,7 @@ class UpdatedLagrangianElasticity final : public ElasticModel<D> {
         R_[i] = principal.eigenvectors() * r_axes.asDiagonal() * principal.eigenvectors().transpose();
       }
     });
+    if (p_.seed_walls) wall_pressure(nl, kind, x, rho0, K, rho, pressure);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, N, 256), [&](auto range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         if (kind[i] != kElastic) continue;
@@ -106,7 +109,19 @@ class UpdatedLagrangianElasticity final : public ElasticModel<D> {
           if (vx < 0) T -= solid_viscosity(p_, vx, dist * dist, c, rho[i], rho[j]) * Mat<D>::Identity();
           acc += mj * T * (p_.kernel.grad_factor(dist) * r);
         });
-        if (p_.contacts) add_solid_contact<D>(p_, nl, i, c, rho0[i], rho[i], kind, body, x, v, acc);
+        if (p_.seed_walls)  // the walls' pressure for the solid (seed 002 section 4.1), walls at rest
+          for (auto j : nl.of(i)) {
+            if (kind[j] != kWall || wall_rho_[j] <= 0) continue;
+            const Vec<D> r = p_.domain.displacement(x[i], x[j]);
+            const double dist = r.norm();
+            if (!(dist < p_.kernel.support() && dist > 0)) continue;
+            Mat<D> T = (sigma[i] - wall_p_[j] * Mat<D>::Identity()) / (rho[i] * wall_rho_[j]);
+            const double vx = v[i].dot(r);
+            if (vx < 0) T -= solid_viscosity(p_, vx, dist * dist, c, rho[i], wall_rho_[j]) * Mat<D>::Identity();
+            acc += wall_rho_[j] * volume * T * (p_.kernel.grad_factor(dist) * r);
+          }
+        if (p_.contacts)
+          add_solid_contact<D>(p_, nl, i, c, rho0[i], rho[i], kind, body, x, v, acc, !p_.seed_walls);
         a[i] = acc + p_.gravity;
       }
     });
@@ -139,6 +154,18 @@ class UpdatedLagrangianElasticity final : public ElasticModel<D> {
           M -= g * r.transpose();                                                         // g (x_j - x_i)^T
           A += (v[j] - v[i]) * g.transpose();
         });
+        // Seed walls: wall particles at rest (v_w = 0, volume d^D) in the sums, so that a solid
+        // pressing on a wall compresses as the seed's continuity has it.
+        if (p_.seed_walls)
+          for (auto j : nl.of(i)) {
+            if (kind[j] != kWall) continue;
+            const Vec<D> r = p_.domain.displacement(x[i], x[j]);
+            const double dist = r.norm();
+            if (!(dist < p_.kernel.support() && dist > 0)) continue;
+            const Vec<D> g = volume * p_.kernel.grad_factor(dist) * r;
+            M -= g * r.transpose();
+            A -= v[i] * g.transpose();
+          }
         const Mat<D> grad_v = A * renormalisation<D>(M).transpose();
         const Mat<D> rate = 0.5 * (grad_v + grad_v.transpose()), spin = 0.5 * (grad_v - grad_v.transpose());
         drho_[i] = -rho[i] * grad_v.trace();
@@ -153,6 +180,38 @@ class UpdatedLagrangianElasticity final : public ElasticModel<D> {
   }
 
  private:
+  // Seed 002 eq. 28 for a wall particle w beside the solid: the solid particles' pressure
+  // interpolated to it with the weight they press it with,
+  //   p_w = [sum_i p_i W_wi + g . sum_i rho_i (x_w - x_i) W_wi] / sum_i W_wi,
+  // and its density from the solid's equation of state, rho_w = rho0 (1 + p_w / K) (rho0, K
+  // weighted the same way). Walls without solid neighbours get rho_w = 0 (left out).
+  template <class Kinds, class Positions, class Scalars, class Columns>
+  void wall_pressure(const NeighbourList& nl, const Kinds& kind, const Positions& x, const Scalars& rho0,
+                     const Scalars& K, const Columns& rho, const Columns& pressure) {
+    const std::size_t N = x.size();
+    wall_p_.assign(N, 0.0);
+    wall_rho_.assign(N, 0.0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, N, 256), [&](auto range) {
+      for (std::size_t w = range.begin(); w != range.end(); ++w) {
+        if (kind[w] != kWall) continue;
+        double weight = 0, pw = 0, r0 = 0, k = 0;
+        for (auto i : nl.of(w)) {
+          if (kind[i] != kElastic) continue;
+          const Vec<D> r = p_.domain.displacement(x[w], x[i]);
+          const double W = p_.kernel.w(r.norm());
+          if (W <= 0) continue;
+          weight += W;
+          pw += (pressure[i] + rho[i] * p_.gravity.dot(r)) * W;
+          r0 += rho0[i] * W;
+          k += K[i] * W;
+        }
+        if (weight <= 0) continue;
+        wall_p_[w] = pw / weight;
+        wall_rho_[w] = (r0 / weight) * (1.0 + wall_p_[w] / (k / weight));
+      }
+    });
+  }
+
   // Each neighbour j of elastic particle i of the same body within the support:
   // f(j, r_ij = x_i - x_j, |r_ij|).
   template <class Kinds, class Bodies, class Positions, class F>
@@ -170,6 +229,7 @@ class UpdatedLagrangianElasticity final : public ElasticModel<D> {
   ElasticParameters<D> p_;
   std::vector<Mat<D>> R_, ds_;  // artificial stress, deviatoric stress rate, by world index
   std::vector<double> drho_;     // density rate
+  std::vector<double> wall_p_, wall_rho_;  // seed walls: each wall particle's pressure and density for the solid
 };
 
 }  // namespace ryushi
