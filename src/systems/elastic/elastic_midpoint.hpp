@@ -8,7 +8,7 @@
 //     m - 1 whole substeps  v += dt_s/2 a, x += dt_s v, q += dt_s q', a = a(x, v, q), v += dt_s/2 a,
 //     then the last one's   v += dt_s/2 a, x += dt_s v, q += dt_s q'     (x^{n+1})
 //   (q: the force model's own state, if it has one: the updated form's density and deviatoric
-//   stress, advanced with the rates of the last evaluation)
+//   stress, advanced with their rates at the drifted positions and half-step velocities)
 //   second stage (ElasticForces, then ElasticCorrector), with the fluid at t^{n+1/2}:
 //     a = a(x^{n+1}, v, q),  v^{n+1} = v + dt_s/2 a + dt f
 // Velocity Verlet evaluates the forces once per substep: a step's first substep starts from the
@@ -24,7 +24,8 @@
 // force), so the momentum they exchange balances to round-off (with f in both kicks it missed by
 // 2e-4 of the total in a water-on-block impact).
 // Clamped particles keep their place and zero velocity. The step ends with the displacement from
-// the rest position (output). The stress follows from the positions (total_lagrangian_elastic.hpp).
+// the rest position (output). The forces, stress and density are the force model's
+// (elastic_model.hpp: total_lagrangian_elastic.hpp or updated_lagrangian_elastic.hpp).
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -106,7 +107,7 @@ template <int D>
 class ElasticForces final : public System<D> {
  public:
   explicit ElasticForces(std::shared_ptr<ElasticModel<D>> model) : model_(std::move(model)) {}
-  std::string name() const override { return "elastic_total_lagrangian"; }
+  std::string name() const override { return "elastic_forces"; }
   Access access() const override {
     Access a;
     model_->declare(a);

@@ -24,7 +24,10 @@
 // Contact with other bodies and the artificial viscosity are the total Lagrangian form's
 // (elastic_model.hpp); walls either push with the same contact springs, or ([method] solid_walls
 // = "seed") enter the momentum sum as particles at rest with the pressure of seed 002's eq. 28
-// interpolated from the solid (section 4.1). Clamped particles get no acceleration; their stress still evolves.
+// interpolated from the solid (section 4.1), and at rest in the velocity gradient. Clamped
+// particles get no acceleration; their stress still evolves. The density and stress advance in
+// the integration's substeps (advance()), with the rates at the drifted positions and the
+// half-step velocities.
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Eigenvalues>
@@ -37,7 +40,7 @@
 namespace ryushi {
 
 namespace components {
-inline constexpr Component<Tensor> deviatoric_stress{"deviatoric_stress"};            // s
+inline constexpr Component<Tensor> deviatoric_stress{"deviatoric_stress"};  // s
 }  // namespace components
 
 template <int D>
@@ -51,9 +54,7 @@ class UpdatedLagrangianElasticity final : public ElasticModel<D> {
         .write(components::acceleration, components::stress, components::solid_density,
                components::solid_pressure, components::strain_energy, components::deviatoric_stress);
   }
-  void initialise(World<D>& world) override {
-    world.ensure(components::deviatoric_stress);
-  }
+  void initialise(World<D>& world) override { world.ensure(components::deviatoric_stress); }
   void evaluate(SystemContext<D>& ctx) override {
     auto x = ctx.read(components::position);
     auto v = ctx.read(components::velocity);
