@@ -217,6 +217,56 @@ TEST_CASE("elastic: seed 002's updated form keeps a block on a wall and swings t
   CHECK(walls_settle < 2.5);  // the measured 2.11x and a margin
 }
 
+TEST_CASE("elastic: a 3D block stays at rest under no load and settles on a wall by its own weight") {
+  // 6 x 6 x 6 particles (E = 1 MPa, nu = 0.3, rho = 1000, H = 0.06 m): with free sides its top
+  // settles by rho g H^2 / (2E) = 1.766e-5 m (measured 1.756e-5 at t = 0.5 s). Without gravity
+  // and walls nothing may move: at the body's corners det(M) is about 0.03, and the rest
+  // correction once fell back to B = I there, so the block flew apart (1.7 cm in 0.025 s).
+  const std::string text = R"([scene]
+dimension = 3
+[domain]
+min = [-0.05, -0.05, -0.05]
+max = [0.15, 0.15, 0.15]
+[particles]
+spacing = 0.01
+[time]
+end = 0.5
+[output]
+interval = 0.25
+probe_interval = 0.01
+[[wall]]
+min = [0.0, 0.0, 0.0]
+max = [0.1, 0.1, 0.1]
+[[elastic]]
+min = [0.02, 0.02, 0.0]
+max = [0.08, 0.08, 0.06]
+density = 1000.0
+youngs_modulus = 1.0e6
+poisson_ratio = 0.3
+[[probe]]
+name = "top_z"
+type = "solid_displacement"
+position = [0.05, 0.05, 0.06]
+axis = 2
+)";
+  auto dir = test::unique_scratch("elastic_block_3d");
+  test::write_text(dir / "block.toml", text);
+  const auto out = run((dir / "block.toml").string(), "", "elastic_block_3d_run");
+  auto csv = test::read_csv(std::filesystem::path(out) / "probes.csv");
+  const double expected = 1000 * 9.81 * 0.06 * 0.06 / (2 * 1e6);
+  MESSAGE("3D top settles by ", -csv["top_z"].back(), " m (rho g H^2 / 2E = ", expected, " m)");
+  CHECK(-csv["top_z"].back() == doctest::Approx(expected).epsilon(0.05));
+  const auto free = run((dir / "block.toml").string(), "--set time.end=0.05 --set physics.gravity=[0.0,0.0,0.0]",
+                        "elastic_block_3d_free");
+  auto u = test::read_dataset(test::last_frame(free), "displacement").values;
+  auto kind = test::read_dataset(test::last_frame(free), "kind").values;
+  double largest = 0;
+  for (std::size_t i = 0; i < kind.size(); ++i)
+    if (kind[i] == 3) largest = std::max(largest, std::hypot(u[3 * i], u[3 * i + 1], u[3 * i + 2]));
+  MESSAGE("without load: largest displacement ", largest, " m");
+  CHECK(largest < 1e-12);
+}
+
 TEST_CASE("elastic: water hitting an elastic block exchanges momentum and keeps the total") {
   // The fluid feels the solid's particles as moving walls, the solid the reaction pair by pair,
   // so the total momentum (fluid m v plus solid rho0 d^2 v) is kept to round-off while the solid

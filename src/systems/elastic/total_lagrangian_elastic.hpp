@@ -33,7 +33,6 @@
 #include "systems/elastic/elastic_parameters.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
-#include "systems/operators/renormalisation.hpp"
 
 namespace ryushi {
 
@@ -99,7 +98,11 @@ class TotalLagrangianElasticity final : public ElasticModel<D> {
         }
       });
       offsets_.push_back(neighbour_.size());
-      if (M.determinant() > kMinRenormalisationDeterminant) B_[k] = M.inverse();
+      // The rest configuration is exact and fixed, so B is M's inverse wherever M has one: the
+      // threshold that guards a moving configuration's noise (renormalisation.hpp) would leave B =
+      // I at the corners of a 3D body (det(M) there about 0.03), F != I at rest, and the body
+      // flying apart under no load.
+      if (std::abs(M.determinant()) > 1e-9) B_[k] = M.inverse();
     }
     // The corrected gradients B_i V0_j grad0 W_ij of the deformation gradient, kept.
     corrected_.resize(gradient_.size());
