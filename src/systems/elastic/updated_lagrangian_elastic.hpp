@@ -111,16 +111,15 @@ class UpdatedLagrangianElasticity final : public ElasticModel<D> {
           acc += mj * T * (p_.kernel.grad_factor(dist) * r);
         });
         if (p_.seed_walls)  // the walls' pressure for the solid (seed 002 section 4.1), walls at rest
-          for (auto j : nl.of(i)) {
-            if (kind[j] != kWall || wall_rho_[j] <= 0) continue;
-            const Vec<D> r = p_.domain.displacement(x[i], x[j]);
-            const double dist = r.norm();
-            if (!(dist < p_.kernel.support() && dist > 0)) continue;
-            Mat<D> T = (sigma[i] - wall_p_[j] * Mat<D>::Identity()) / (rho[i] * wall_rho_[j]);
-            const double vx = v[i].dot(r);
-            if (vx < 0) T -= solid_viscosity(p_, vx, dist * dist, c, rho[i], wall_rho_[j]) * Mat<D>::Identity();
-            acc += wall_rho_[j] * volume * T * (p_.kernel.grad_factor(dist) * r);
-          }
+          within_support(
+              nl, x, i, [&](std::size_t j) { return kind[j] == kWall && wall_rho_[j] > 0; },
+              [&](std::size_t j, const Vec<D>& r, double dist) {
+                Mat<D> T = (sigma[i] - wall_p_[j] * Mat<D>::Identity()) / (rho[i] * wall_rho_[j]);
+                const double vx = v[i].dot(r);
+                if (vx < 0)
+                  T -= solid_viscosity(p_, vx, dist * dist, c, rho[i], wall_rho_[j]) * Mat<D>::Identity();
+                acc += wall_rho_[j] * volume * T * (p_.kernel.grad_factor(dist) * r);
+              });
         if (p_.contacts)
           add_solid_contact<D>(p_, nl, i, c, rho0[i], rho[i], kind, body, x, v, acc, !p_.seed_walls);
         a[i] = acc + p_.gravity;
@@ -158,15 +157,13 @@ class UpdatedLagrangianElasticity final : public ElasticModel<D> {
         // Seed walls: wall particles at rest (v_w = 0, volume d^D) in the sums, so that a solid
         // pressing on a wall compresses as the seed's continuity has it.
         if (p_.seed_walls)
-          for (auto j : nl.of(i)) {
-            if (kind[j] != kWall) continue;
-            const Vec<D> r = p_.domain.displacement(x[i], x[j]);
-            const double dist = r.norm();
-            if (!(dist < p_.kernel.support() && dist > 0)) continue;
-            const Vec<D> g = volume * p_.kernel.grad_factor(dist) * r;
-            M -= g * r.transpose();
-            A -= v[i] * g.transpose();
-          }
+          within_support(
+              nl, x, i, [&](std::size_t j) { return kind[j] == kWall; },
+              [&](std::size_t, const Vec<D>& r, double dist) {
+                const Vec<D> g = volume * p_.kernel.grad_factor(dist) * r;
+                M -= g * r.transpose();
+                A -= v[i] * g.transpose();
+              });
         const Mat<D> grad_v = A * renormalisation<D>(M).transpose();
         const Mat<D> rate = 0.5 * (grad_v + grad_v.transpose()), spin = 0.5 * (grad_v - grad_v.transpose());
         drho_[i] = -rho[i] * grad_v.trace();
@@ -213,18 +210,23 @@ class UpdatedLagrangianElasticity final : public ElasticModel<D> {
     });
   }
 
-  // Each neighbour j of elastic particle i of the same body within the support:
+  // Each neighbour j of particle i within the support that `accept(j)` takes:
   // f(j, r_ij = x_i - x_j, |r_ij|).
-  template <class Kinds, class Bodies, class Positions, class F>
-  void partners(const NeighbourList& nl, const Kinds& kind, const Bodies& body, const Positions& x, std::size_t i,
-                F&& f) const {
+  template <class Positions, class Accept, class F>
+  void within_support(const NeighbourList& nl, const Positions& x, std::size_t i, Accept&& accept, F&& f) const {
     const double support = p_.kernel.support();
     for (auto j : nl.of(i)) {
-      if (kind[j] != kElastic || body[j] != body[i]) continue;
+      if (!accept(j)) continue;
       const Vec<D> r = p_.domain.displacement(x[i], x[j]);
       const double dist = r.norm();
       if (dist < support && dist > 0) f(j, r, dist);
     }
+  }
+  // ... of the same body as elastic particle i.
+  template <class Kinds, class Bodies, class Positions, class F>
+  void partners(const NeighbourList& nl, const Kinds& kind, const Bodies& body, const Positions& x, std::size_t i,
+                F&& f) const {
+    within_support(nl, x, i, [&](std::size_t j) { return kind[j] == kElastic && body[j] == body[i]; }, f);
   }
 
   ElasticParameters<D> p_;
