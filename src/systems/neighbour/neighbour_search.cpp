@@ -41,56 +41,127 @@ void build_neighbour_list(const Domain<D>& domain, double radius, std::span<cons
   const auto sorted = grid.sorted();
 
   // Work goes cell by cell: the candidates of the 3^D surrounding cells are gathered once into
-  // contiguous arrays and every particle of the cell is tested against them. Each chunk of cells
-  // writes into its own buffer (no atomics); a second pass scatters the lists into CSR order.
+  // contiguous arrays (one per axis) and every particle of the cell is tested against them. Each
+  // chunk of cells writes into its own buffer (no atomics); a second pass scatters the lists into
+  // CSR order. The test writes every candidate and advances by the outcome, without a branch:
+  // about one candidate in six is a neighbour (3D), at random, and a branch on it mispredicted
+  // often enough to be most of the build.
   const std::size_t ncell = grid.cell_count();
   constexpr std::size_t kCellsPerChunk = 64;
   const std::size_t nchunks = (ncell + kCellsPerChunk - 1) / kCellsPerChunk;
   std::vector<std::vector<std::uint32_t>> buffers(nchunks);
   std::vector<std::uint32_t> count(N), start(N);
 
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nchunks, 1), [&](auto range) {
-    std::vector<std::uint32_t> cand;
-    std::vector<Vec<D>> cand_x;
-    std::vector<char> cand_skip;
-    for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk) {
-      auto& buf = buffers[chunk];
-      buf.clear();
-      const std::size_t c_end = std::min(ncell, (chunk + 1) * kCellsPerChunk);
-      for (std::size_t c = chunk * kCellsPerChunk; c < c_end; ++c) {
-        const std::uint32_t first = grid.cell_start(c), last = grid.cell_start(c + 1);
-        if (first == last) continue;
-        cand.clear();
-        cand_x.clear();
-        cand_skip.clear();
-        auto cc = grid.coords(static_cast<std::uint32_t>(c));
-        for (auto& o : offsets) {
-          std::array<std::int64_t, D> nc;
-          for (int a = 0; a < D; ++a) nc[a] = cc[a] + o[a];
-          std::int64_t cell = grid.cell_at(nc);
-          if (cell < 0) continue;
-          for (std::uint32_t k = grid.cell_start(cell); k < grid.cell_start(cell + 1); ++k) {
-            std::uint32_t j = sorted[k];
-            cand.push_back(j);
-            cand_x.push_back(x[j]);
-            cand_skip.push_back(skipping && kind[j] == skip_kind);
+  // One stencil cell's run of candidates and the bounding box of their positions.
+  struct Segment {
+    std::uint32_t begin, end;
+    Vec<D> lo, hi;
+    bool own;  // the particle's own cell: the only one that holds the particle itself
+  };
+  auto gather = [&](auto periodic_axes, auto skipping_kind) {
+    constexpr bool kPeriodic = decltype(periodic_axes)::value, kSkipping = decltype(skipping_kind)::value;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nchunks, 1), [&](auto range) {
+      std::vector<std::uint32_t> cand;
+      std::array<std::vector<double>, D> cand_x;
+      std::vector<std::uint8_t> cand_keep;  // 0 where a pair with a skipped particle is left out
+      std::vector<Segment> segments;
+      for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk) {
+        auto& buf = buffers[chunk];
+        std::size_t used = 0;  // buf grows as a high-water mark; entries past `used` are scratch
+        const std::size_t c_end = std::min(ncell, (chunk + 1) * kCellsPerChunk);
+        for (std::size_t c = chunk * kCellsPerChunk; c < c_end; ++c) {
+          const std::uint32_t first = grid.cell_start(c), last = grid.cell_start(c + 1);
+          if (first == last) continue;
+          cand.clear();
+          for (auto& axis : cand_x) axis.clear();
+          cand_keep.clear();
+          segments.clear();
+          auto cc = grid.coords(static_cast<std::uint32_t>(c));
+          for (auto& o : offsets) {
+            std::array<std::int64_t, D> nc;
+            for (int a = 0; a < D; ++a) nc[a] = cc[a] + o[a];
+            std::int64_t cell = grid.cell_at(nc);
+            if (cell < 0 || grid.cell_start(cell) == grid.cell_start(cell + 1)) continue;
+            Segment seg{static_cast<std::uint32_t>(cand.size()), 0, x[sorted[grid.cell_start(cell)]],
+                        x[sorted[grid.cell_start(cell)]], std::size_t(cell) == c};
+            for (std::uint32_t k = grid.cell_start(cell); k < grid.cell_start(cell + 1); ++k) {
+              std::uint32_t j = sorted[k];
+              cand.push_back(j);
+              for (int a = 0; a < D; ++a) cand_x[a].push_back(x[j][a]);
+              if constexpr (kSkipping) cand_keep.push_back(kind[j] == skip_kind ? 0 : 1);
+              seg.lo = seg.lo.cwiseMin(x[j]);
+              seg.hi = seg.hi.cwiseMax(x[j]);
+            }
+            seg.end = static_cast<std::uint32_t>(cand.size());
+            segments.push_back(seg);
+          }
+          const std::size_t M = cand.size();
+          for (std::uint32_t k = first; k < last; ++k) {
+            const std::uint32_t i = sorted[k];
+            const Vec<D> xi = x[i];
+            // A skipped particle keeps only the candidates that are not skipped; others keep all.
+            const std::uint8_t i_kept = kSkipping && kind[i] == skip_kind ? 0 : 1;
+            if (buf.size() < used + M) buf.resize(std::max(2 * buf.size(), used + M));
+            std::uint32_t* dst = buf.data() + used;
+            std::uint32_t n = 0;
+            for (const Segment& seg : segments) {
+              if constexpr (!kPeriodic) {
+                // A cell whose candidates' box lies beyond the radius holds no neighbour (in 3D
+                // about a quarter of the 27 cells, by where the particle sits in its own). The
+                // box distance is computed as the pair distances are, with rounding monotone in
+                // each operand: never above any of its candidates' computed distance.
+                double box2 = 0;
+                for (int a = 0; a < D; ++a) {
+                  const double e = std::max({seg.lo[a] - xi[a], 0.0, xi[a] - seg.hi[a]});
+                  box2 += e * e;
+                }
+                if (box2 > r2) continue;
+              }
+              auto test = [&](auto own_cell) {
+                for (std::size_t q = seg.begin; q < seg.end; ++q) {
+                  double r2q;
+                  if constexpr (kPeriodic) {
+                    Vec<D> xq;
+                    for (int a = 0; a < D; ++a) xq[a] = cand_x[a][q];
+                    r2q = domain.displacement(xi, xq).squaredNorm();
+                  } else {
+                    r2q = 0;
+                    for (int a = 0; a < D; ++a) {
+                      const double e = xi[a] - cand_x[a][q];
+                      r2q += e * e;
+                    }
+                  }
+                  dst[n] = cand[q];
+                  bool keep = r2q <= r2;
+                  if constexpr (decltype(own_cell)::value) keep &= cand[q] != i;
+                  if constexpr (kSkipping) keep &= (cand_keep[q] | i_kept) != 0;
+                  n += static_cast<std::uint32_t>(keep);
+                }
+              };
+              if (seg.own)
+                test(std::true_type{});
+              else
+                test(std::false_type{});
+            }
+            start[i] = static_cast<std::uint32_t>(used);
+            count[i] = n;
+            used += n;
           }
         }
-        for (std::uint32_t k = first; k < last; ++k) {
-          const std::uint32_t i = sorted[k];
-          const Vec<D> xi = x[i];
-          const bool i_skip = skipping && kind[i] == skip_kind;
-          start[i] = static_cast<std::uint32_t>(buf.size());
-          for (std::size_t q = 0; q < cand.size(); ++q) {
-            if (i_skip && cand_skip[q]) continue;
-            Vec<D> d = periodic ? domain.displacement(xi, cand_x[q]) : Vec<D>(xi - cand_x[q]);
-            if (d.squaredNorm() <= r2 && cand[q] != i) buf.push_back(cand[q]);
-          }
-          count[i] = static_cast<std::uint32_t>(buf.size()) - start[i];
-        }
+        buf.resize(used);
       }
-    }
-  });
+    });
+  };
+  auto with_skipping = [&](auto periodic_axes) {
+    if (skipping)
+      gather(periodic_axes, std::true_type{});
+    else
+      gather(periodic_axes, std::false_type{});
+  };
+  if (periodic)
+    with_skipping(std::true_type{});
+  else
+    with_skipping(std::false_type{});
 
   out.offsets.assign(N + 1, 0);
   for (std::size_t i = 0; i < N; ++i) out.offsets[i + 1] = out.offsets[i] + count[i];
