@@ -9,6 +9,7 @@
 //              local minimum so that the operator is linear)
 #include <vector>
 
+#include "ecs/outer_sum.hpp"
 #include "systems/operators/renormalisation.hpp"
 
 namespace ryushi {
@@ -30,13 +31,14 @@ Vec<D> gradient_symmetric(const ParticleView<D>& v, std::span<const double> f, s
 template <int D>
 Vec<D> gradient_corrected(const ParticleView<D>& v, std::span<const double> f, std::size_t i) {
   // One pass gathers both the moment matrix and the uncorrected gradient.
-  Mat<D> M = Mat<D>::Zero();
+  OuterSum<D> moments;
   Vec<D> g = Vec<D>::Zero();
   for (auto j : v.neighbours.of(i)) {
     Vec<D> r = v.r(i, j), gw = v.volume[j] * v.grad_w(r);
-    M += gw * r.transpose();
+    moments.add(gw, r);
     g += (f[j] - f[i]) * gw;
   }
+  const Mat<D> M = moments.matrix();
   return M.determinant() > kMinRenormalisationDeterminant ? Vec<D>(M.inverse() * g) : g;
 }
 

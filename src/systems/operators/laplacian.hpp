@@ -18,6 +18,7 @@
 #include <array>
 #include <vector>
 
+#include "ecs/outer_sum.hpp"
 #include "systems/operators/renormalisation.hpp"
 #include "systems/operators/symmetric_pairs.hpp"
 
@@ -82,7 +83,6 @@ bool laplacian_weights_corrected(const Stencil<D>& s, std::vector<double>& w) {
   }
   const auto Y = corrected_quadratic_moments(s, L);
   // K beta = delta, beta = B's independent entries; u_j holds e (x) gW with off-diagonals doubled.
-  Eigen::Matrix<double, K, K> Kmat = Eigen::Matrix<double, K, K>::Zero();
   Eigen::Matrix<double, K, 1> delta = Eigen::Matrix<double, K, 1>::Zero();
   for (int p = 0; p < D; ++p) delta[p] = 1.0;
   auto u_of = [&](const Vec<D>& e, const Vec<D>& gw) {
@@ -93,9 +93,9 @@ bool laplacian_weights_corrected(const Stencil<D>& s, std::vector<double>& w) {
     }
     return u;
   };
-  // Plain arrays for the outer products: Eigen's K x K update through the stack stalled on
-  // store forwarding (60% of this function's time in two instructions).
-  double km[K][K] = {};
+  // Plain scalars for the outer products (ecs/outer_sum.hpp): Eigen's K x K update through the
+  // stack stalled on store forwarding (60% of this function's time in two instructions).
+  OuterSum<K> moments;
   for (std::size_t k = 0; k < s.size(); ++k) {
     const double len = s.len[k];
     const Vec<D> e = s.r[k] / len;
@@ -103,11 +103,9 @@ bool laplacian_weights_corrected(const Stencil<D>& s, std::vector<double>& w) {
     double wv[K];
     for (int p = 0; p < K; ++p)
       wv[p] = s.volume[k] * (len * e[pairs[p].first] * e[pairs[p].second] - e.dot(Y[p]));
-    for (int p = 0; p < K; ++p)
-      for (int q = 0; q < K; ++q) km[p][q] += wv[p] * u[q];
+    moments.add(wv, u);
   }
-  for (int p = 0; p < K; ++p)
-    for (int q = 0; q < K; ++q) Kmat(p, q) = km[p][q];
+  const Eigen::Matrix<double, K, K> Kmat = moments.matrix();
   Eigen::FullPivLU<Eigen::Matrix<double, K, K>> lu(Kmat);
   if (!lu.isInvertible()) {
     laplacian_weights_standard(s, w);

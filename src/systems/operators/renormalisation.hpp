@@ -7,6 +7,7 @@
 // surface, 0 for a single neighbour).
 #include <Eigen/LU>
 
+#include "ecs/outer_sum.hpp"
 #include "systems/operators/stencil.hpp"
 
 namespace ryushi {
@@ -15,9 +16,9 @@ inline constexpr double kMinRenormalisationDeterminant = 0.05;
 
 template <int D>
 Mat<D> moment_matrix(const Stencil<D>& s) {
-  Mat<D> M = Mat<D>::Zero();
-  for (std::size_t k = 0; k < s.size(); ++k) M -= (s.volume[k] * s.factor[k]) * s.r[k] * s.r[k].transpose();
-  return M;
+  OuterSum<D> M;
+  for (std::size_t k = 0; k < s.size(); ++k) M.subtract(Vec<D>((s.volume[k] * s.factor[k]) * s.r[k]), s.r[k]);
+  return M.matrix();
 }
 
 template <int D>

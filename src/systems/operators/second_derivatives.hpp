@@ -10,6 +10,7 @@
 // Also the second-order gradient of eq. 6: <grad f>_2 = <grad f>_1 - 1/2 sum_k V_k (r^T H r) gW~_k.
 #include <Eigen/LU>
 
+#include "ecs/outer_sum.hpp"
 #include "systems/operators/gradient.hpp"
 #include "systems/operators/laplacian.hpp"
 
@@ -41,7 +42,7 @@ SecondOrderDerivatives<D> second_derivatives_sph2(const ParticleView<D>& v, std:
     G1 += (f[j] - f[i]) * gw;
     for (int p = 0; p < K; ++p) Q[p] += gw * r[pairs[p].first] * r[pairs[p].second];
   }
-  Eigen::Matrix<double, K, K> M = Eigen::Matrix<double, K, K>::Zero();
+  OuterSum<K> moments;
   Eigen::Matrix<double, K, 1> rhs = Eigen::Matrix<double, K, 1>::Zero();
   for (auto j : v.neighbours.of(i)) {
     Vec<D> r = v.r(i, j), gw = L * v.grad_w(r);
@@ -53,10 +54,10 @@ SecondOrderDerivatives<D> second_derivatives_sph2(const ParticleView<D>& v, std:
       q[k] = r[a] * r[b];
       p[k] = q[k] - r.dot(Q[k]);
     }
-    M += v.volume[j] * F * q * p.transpose();
+    moments.add(Eigen::Matrix<double, K, 1>(v.volume[j] * F * q), p);
     rhs += v.volume[j] * F * (f[j] - f[i] - r.dot(G1)) * q;
   }
-  Eigen::FullPivLU<Eigen::Matrix<double, K, K>> lu(M);
+  Eigen::FullPivLU<Eigen::Matrix<double, K, K>> lu(moments.matrix());
   if (!lu.isInvertible()) return fallback();
   Eigen::Matrix<double, K, 1> Df = 2.0 * lu.solve(rhs);
   SecondOrderDerivatives<D> out{Mat<D>::Zero(), G1, true};
@@ -92,7 +93,7 @@ bool laplacian_weights_sph2(const Stencil<D>& s, std::vector<double>& w) {
     return false;
   }
   const auto Q = corrected_quadratic_moments(s, L);
-  Eigen::Matrix<double, K, K> M = Eigen::Matrix<double, K, K>::Zero();
+  OuterSum<K> moments;
   for (std::size_t k = 0; k < s.size(); ++k) {
     const Vec<D>& r = s.r[k];
     const Vec<D> gw = L * s.grad_w(k);
@@ -102,9 +103,9 @@ bool laplacian_weights_sph2(const Stencil<D>& s, std::vector<double>& w) {
       q[m] = r[pairs[m].first] * r[pairs[m].second];
       p[m] = q[m] - r.dot(Q[m]);
     }
-    M += s.volume[k] * (r.dot(gw) / (r2 * r2)) * q * p.transpose();
+    moments.add(Eigen::Matrix<double, K, 1>(s.volume[k] * (r.dot(gw) / (r2 * r2)) * q), p);
   }
-  Eigen::FullPivLU<Eigen::Matrix<double, K, K>> lu(M.transpose());
+  Eigen::FullPivLU<Eigen::Matrix<double, K, K>> lu(moments.matrix().transpose());
   if (!lu.isInvertible()) {
     laplacian_weights_standard(s, w);
     return false;

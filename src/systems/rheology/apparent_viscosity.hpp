@@ -9,6 +9,7 @@
 // then uses the particle's temperature when it depends on it (Arrhenius).
 #include <cmath>
 
+#include "ecs/outer_sum.hpp"
 #include "ecs/system.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/heat/heat_parameters.hpp"
@@ -67,7 +68,7 @@ class ApparentViscosity final : public System<D> {
     auto mu = ctx.write(components::viscosity);
     const double support2 = p_.kernel.support() * p_.kernel.support();
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {
-      Mat<D> M = Mat<D>::Zero(), G = Mat<D>::Zero();
+      OuterSum<D> moments, velocity_moments;
       for (auto j : nl.of(i)) {
         const bool fluid_j = kind[j] == kFluid;
         if (!fluid_j && ghost.empty()) continue;
@@ -76,9 +77,11 @@ class ApparentViscosity final : public System<D> {
         if (r2 >= support2) continue;
         const Vec<D> gw = -volume_[j] * p_.kernel.grad_factor(std::sqrt(r2)) * r;  // V_j grad_i W_ij
         const Vec<D> vj = fluid_j ? v[j] : ghost[j];
-        M += gw * r.transpose();
-        G += gw * (vj - v[i]).transpose();
+        moments.add(gw, r);
+        velocity_moments.add(gw, Vec<D>(vj - v[i]));
       }
+      const Mat<D> M = moments.matrix();
+      Mat<D> G = velocity_moments.matrix();
       if (M.determinant() > kMinRenormalisationDeterminant) G = M.inverse() * G;
       const Mat<D> Dm = G + G.transpose();
       rate[i] = std::sqrt(0.5 * Dm.squaredNorm());
