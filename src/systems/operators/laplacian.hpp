@@ -100,7 +100,7 @@ bool laplacian_weights_corrected(const Stencil<D>& s, std::vector<double>& w) {
     const double len = s.len[k];
     const Vec<D> e = s.r[k] / len;
     const Eigen::Matrix<double, K, 1> u = u_of(e, s.grad_w(k));
-    double wv[K];
+    Eigen::Matrix<double, K, 1> wv;
     for (int p = 0; p < K; ++p)
       wv[p] = s.volume[k] * (len * e[pairs[p].first] * e[pairs[p].second] - e.dot(Y[p]));
     moments.add(wv, u);
