@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "ecs/lattice.hpp"
+#include "ecs/outer_sum.hpp"
 #include "systems/elastic/elastic_model.hpp"
 #include "ecs/system.hpp"
 #include "systems/elastic/elastic_parameters.hpp"
@@ -146,9 +147,10 @@ class TotalLagrangianElasticity final : public ElasticModel<D> {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](auto range) {
       for (std::size_t k = range.begin(); k != range.end(); ++k) {
         const std::size_t i = index_[k];
-        Mat<D> F = Mat<D>::Zero();
+        OuterSum<D> deformation;  // F = sum_j (x_j - x_i) (B grad0 W_ij)^T
         for (std::size_t e = offsets_[k]; e < offsets_[k + 1]; ++e)
-          F += (x[index_[neighbour_[e]]] - x[i]) * corrected_[e].transpose();
+          deformation.add(Vec<D>(x[index_[neighbour_[e]]] - x[i]), corrected_[e]);
+        const Mat<D> F = deformation.matrix();
         const Mat<D> E = 0.5 * (F.transpose() * F - Mat<D>::Identity());
         const double lambda = K[i] - 2.0 / 3.0 * G[i];
         const Mat<D> S = lambda * E.trace() * Mat<D>::Identity() + 2.0 * G[i] * E;

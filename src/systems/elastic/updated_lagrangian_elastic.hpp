@@ -34,6 +34,7 @@
 #include <cmath>
 #include <vector>
 
+#include "ecs/outer_sum.hpp"
 #include "systems/elastic/elastic_model.hpp"
 #include "systems/operators/renormalisation.hpp"
 
@@ -148,11 +149,11 @@ class UpdatedLagrangianElasticity final : public ElasticModel<D> {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, N, 256), [&](auto range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         if (kind[i] != kElastic) continue;
-        Mat<D> M = Mat<D>::Zero(), A = Mat<D>::Zero();
+        OuterSum<D> M, A;  // the moments and the uncorrected velocity gradient
         partners(nl, kind, body, x, i, [&](std::size_t j, const Vec<D>& r, double dist) {
           const Vec<D> g = (rho0[j] * volume / rho[j]) * p_.kernel.grad_factor(dist) * r;  // V_j grad W_ij
-          M -= g * r.transpose();                                                         // g (x_j - x_i)^T
-          A += (v[j] - v[i]) * g.transpose();
+          M.subtract(g, r);                                                               // g (x_j - x_i)^T
+          A.add(Vec<D>(v[j] - v[i]), g);
         });
         // Seed walls: wall particles at rest (v_w = 0, volume d^D) in the sums, so that a solid
         // pressing on a wall compresses as the seed's continuity has it.
@@ -161,10 +162,10 @@ class UpdatedLagrangianElasticity final : public ElasticModel<D> {
               nl, x, i, [&](std::size_t j) { return kind[j] == kWall; },
               [&](std::size_t, const Vec<D>& r, double dist) {
                 const Vec<D> g = volume * p_.kernel.grad_factor(dist) * r;
-                M -= g * r.transpose();
-                A -= v[i] * g.transpose();
+                M.subtract(g, r);
+                A.subtract(v[i], g);
               });
-        const Mat<D> grad_v = A * renormalisation<D>(M).transpose();
+        const Mat<D> grad_v = A.matrix() * renormalisation<D>(M.matrix()).transpose();
         const Mat<D> rate = 0.5 * (grad_v + grad_v.transpose()), spin = 0.5 * (grad_v - grad_v.transpose());
         drho_[i] = -rho[i] * grad_v.trace();
         ds_[i] = 2.0 * G[i] * (rate - rate.trace() / 3.0 * Mat<D>::Identity()) + s[i] * spin.transpose() +
