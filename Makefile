@@ -5,7 +5,7 @@ JOBS       ?= $(shell nproc)
 PACKAGES   := cmake g++ make pkg-config libtbb-dev libeigen3-dev libhdf5-dev libspdlog-dev \
               doctest-dev libtomlplusplus-dev libcli11-dev libbenchmark-dev nlohmann-json3-dev \
               libmuparser-dev libcgal-dev
-PY_PACKAGES := python3-numpy python3-h5py python3-matplotlib
+PY_PACKAGES := python3-numpy python3-h5py python3-matplotlib python3-scipy
 # The real-client test: ParaView's own readers, rendering under a virtual X display; ffmpeg
 # for `ryushi render --movie`.
 PV_PACKAGES := paraview python3-paraview xvfb xauth ffmpeg

@@ -89,6 +89,10 @@ void populate_isph_world(const Scene& s, const IsphParameters<D>& p, World<D>& w
   for (std::size_t i = 0; i < world.size(); ++i)
     if (kind[i] == kWall) normal[i] = appended.wall_normal[next++];
   add_surface_elements(s, appended, world);
+  if (s.isph_confined) {  // read by the pressure rows; no system writes them
+    world.ensure(components::free_surface);
+    world.ensure(components::surface_normal);
+  }
   if (!p.fixed_pressure) return;
   // [[fixed_pressure]]: the fluid particles inside a box hold p = pressure + gradient . x.
   auto& fixed = world.ensure(components::fixed_pressure);
@@ -116,9 +120,10 @@ std::vector<SystemPtr<D>> isph_pipeline(const Scene& s, const IsphParameters<D>&
   std::vector<SystemPtr<D>> list{
       std::make_shared<NeighbourSearch<D>>(p.search_radius(), kDummy, s.neighbour_skin * s.spacing, false),
       std::make_shared<IsphPredictor<D>>(p),
-      isph2_surface_detection<D>(context),
-      std::make_shared<IsphPressureEquation<D>>(p),
   };
+  // A confined fluid has no surface to find (populate_isph_world leaves the flags cleared).
+  if (!s.isph_confined) list.push_back(isph2_surface_detection<D>(context));
+  list.push_back(std::make_shared<IsphPressureEquation<D>>(p));
   if (solver.preconditioner != "none") list.push_back(std::make_shared<PreconditionerSetup<D>>(solver));
   list.push_back(std::make_shared<LinearSolve<D>>(solver));
   list.push_back(std::make_shared<IsphPressureCorrection<D>>(p));

@@ -189,6 +189,7 @@ struct Scene {
               pressure_gradient = "corrected";
   double uncorrected_divergence_det = 0.8;
   std::string free_surface_pressure = "extrapolated";
+  bool isph_confined = false;  // no free surface: the fluid fills its walls (a pipe)
   // [shifting]
   std::string shifting_model = "density";
   double shifting_coefficient = 0.005;
