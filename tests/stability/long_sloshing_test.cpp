@@ -99,5 +99,6 @@ TEST_CASE(
   check_long_sloshing(
       "isph", 20, {"method.name=isph", "method.wall_rows=\"shepard\"", "method.ppe_laplacian=\"standard\"",
                "method.pressure_gradient=\"symmetric\"", "method.free_surface_pressure=\"particle\"",
+               "method.viscous_laplacian=\"standard\"", "solver.tolerance=1e-6",
                "method.compression_relaxation=0.5", "shifting.model=\"fickian\""});
 }
