@@ -2,6 +2,7 @@
 // Tsuji & Asai (seed 000) with the I-SPH(2) free-surface rule. One step:
 //   neighbour_search          pairs within the support + a skin at x^n (reused at x*)
 //   isph_predictor            v* = v + dt (nu lap v + g), x* = x + dt v*           (eq. 3)
+//   support_filter            the list narrowed to the kernel support at x* (not Eulerian)
 //   free_surface_detection    the I-SPH(2) rule at x* (det M_i < 0.6, Marrone's test)
 //   ppe_assembly              fluid rows (eq. 5), Neumann wall rows (eq. 17), p = 0 on the surface
 //   multigrid_setup           (or jacobi_setup) the preconditioner
@@ -27,6 +28,7 @@
 #include "systems/isph/isph_wall_guard.hpp"
 #include "systems/integrate/velocity_time_step.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
+#include "systems/neighbour/support_filter.hpp"
 #include "systems/pressure/linear_solve.hpp"
 #include "systems/pressure/preconditioner_setup.hpp"
 #include "systems/pressure/pressure_system_dump.hpp"
@@ -121,6 +123,9 @@ std::vector<SystemPtr<D>> isph_pipeline(const Scene& s, const IsphParameters<D>&
       std::make_shared<NeighbourSearch<D>>(p.search_radius(), kDummy, s.neighbour_skin * s.spacing, false),
       std::make_shared<IsphPredictor<D>>(p),
   };
+  // The list holds the step's motion; from x* on only the pairs within the support count.
+  if (p.description != IsphDescription::Eulerian)
+    list.push_back(std::make_shared<SupportFilter<D>>(p.kernel.support()));
   // A confined fluid has no surface to find (populate_isph_world leaves the flags cleared).
   if (!s.isph_confined) list.push_back(isph2_surface_detection<D>(context));
   list.push_back(std::make_shared<IsphPressureEquation<D>>(p));
