@@ -35,13 +35,15 @@ struct Stencil {
     len.resize(n);
     factor.resize(n);
     volume.resize(n);
+    // The scattered reads first, then the arithmetic over contiguous arrays, which vectorises
+    // (the square roots and the kernel's division bound the gather when they were interleaved).
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t j = neighbours[k];
       r[k] = v.r(particle, j);
-      len[k] = r[k].norm();
-      factor[k] = v.kernel.grad_factor(len[k]);
       volume[k] = v.volume[j];
     }
+    for (std::size_t k = 0; k < n; ++k) len[k] = r[k].norm();
+    v.kernel.grad_factors(len.data(), factor.data(), n);
   }
 };
 
