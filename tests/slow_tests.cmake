@@ -77,3 +77,5 @@ set_tests_properties("elastic: seed 002's drifting block hits the elastic plate,
                      PROPERTIES LABELS slow COST 25)
 set_tests_properties("elastic: seed 002's updated form keeps a block on a wall and swings the plate, softer than the total Lagrangian form"
                      PROPERTIES LABELS slow COST 15)
+set_tests_properties("solid: an ISPH piston wave maker makes the waves of linear wave-maker theory at h/d = 20"
+                     PROPERTIES LABELS slow COST 100)

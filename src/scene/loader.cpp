@@ -612,10 +612,9 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
         b.displacement_where = val.location(motion, path_of("solid", i, "displacement"));
       }
       const bool moves = where("solid", i, "displacement") || where("solid", i, "displacement_table");
-      need(!(moves && isph), where("solid", i, "displacement") ? "displacement" : "displacement_table",
-           "moves, but method isph is not stable beside a moving wall yet: its wall rows take the wall's velocity "
-           "(ISPH paper eq. 17), yet the piston wave maker sprays at the contact line from t = 0.6 s and fails at "
-           "t = 1.7 s (docs/isph.md); use wcsph or mps");
+      need(!(moves && isph && sc.isph_description == "eulerian"),
+           where("solid", i, "displacement") ? "displacement" : "displacement_table",
+           "moves, but method isph with description = \"eulerian\" keeps every particle in place");
       if (auto table = t["displacement_table"].value<std::string>()) {
         need(!where("solid", i, "velocity") && !where("solid", i, "displacement"), "displacement_table",
              "has displacement_table with velocity or displacement; give one");
