@@ -19,7 +19,7 @@ set_tests_properties("mps: dam break runs past the far-wall impact and keeps its
 set_tests_properties("isph poiseuille: the Eulerian channel follows the Morris start-up and converges at l/d = 10, 16, 20"
                      PROPERTIES LABELS slow COST 18)
 set_tests_properties("isph poiseuille: the Eulerian 3D pipe follows the Bessel start-up and converges at l/d = 10, 16, 20"
-                     PROPERTIES LABELS slow COST 75)
+                     PROPERTIES LABELS slow COST 144)
 set_tests_properties("energy: a WCSPH sloshing tank never gains energy and keeps the linear period"
                      PROPERTIES LABELS slow COST 14)
 set_tests_properties(
