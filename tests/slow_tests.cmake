@@ -16,10 +16,8 @@ set_tests_properties("isph: a resting tank keeps rho g depth and stays still" PR
 set_tests_properties("mps: 3D dam break front meets the criterion and stays in its tank through the impact"
                      PROPERTIES LABELS slow COST 8)
 set_tests_properties("mps: dam break runs past the far-wall impact and keeps its number density" PROPERTIES LABELS slow COST 16)
-set_tests_properties("isph poiseuille: the Eulerian channel follows the Morris start-up and converges at l/d = 10, 16, 20"
-                     PROPERTIES LABELS slow COST 18)
 set_tests_properties("isph poiseuille: the Eulerian 3D pipe follows the Bessel start-up and converges at l/d = 10, 16, 20"
-                     PROPERTIES LABELS slow COST 144)
+                     PROPERTIES LABELS slow COST 50)
 set_tests_properties("energy: a WCSPH sloshing tank never gains energy and keeps the linear period"
                      PROPERTIES LABELS slow COST 14)
 set_tests_properties(
