@@ -41,6 +41,28 @@ double morris(double y, double t) {
   return u;
 }
 
+// Runs a Poiseuille scene with the given overrides into a scratch folder; the frames at t = 0.05,
+// 0.1 and 0.5 s (output every 0.05 s: frames 1, 2 and 10).
+constexpr double kTimes[] = {0.05, 0.1, 0.5};
+std::array<std::filesystem::path, 3> run_poiseuille(const std::string& scene, const std::string& name,
+                                                    std::vector<std::string> sets) {
+  auto dir = test::scratch(name);
+  RunOptions opt;
+  opt.scene = test::scene_path(scene);
+  opt.out_dir = (dir / "out").string();
+  opt.quiet = true;
+  opt.sets = std::move(sets);
+  REQUIRE(run_scene(opt) == kExitDone);
+  std::array<std::filesystem::path, 3> frames;
+  const int numbers[] = {1, 2, 10};
+  for (int k = 0; k < 3; ++k) {
+    char file[32];
+    std::snprintf(file, sizeof file, "frame_%05d.h5", numbers[k]);
+    frames[k] = dir / "out" / "frames" / file;
+  }
+  return frames;
+}
+
 // scenes/poiseuille_isph_2d.toml at spacing d: the geometry moves with d (the wall particles stay
 // on y = 0 and y = l, the buffers are three spacings long), set on the shipped scene.
 std::vector<std::string> channel_at(double d) {
@@ -84,23 +106,13 @@ double profile_error(const std::filesystem::path& frame, double t) {
 }  // namespace
 
 TEST_CASE("isph poiseuille: the Eulerian channel follows the Morris start-up and converges at l/d = 10, 16, 20") {
-  const double times[] = {0.05, 0.1, 0.5};
-  const int frames[] = {1, 2, 10};
   std::vector<std::array<double, 3>> errors;
   for (int cells : {10, 16, 20}) {
-    const double d = kWidth / cells;
-    auto dir = test::scratch("poiseuille_" + std::to_string(cells));
-    RunOptions opt;
-    opt.scene = test::scene_path("poiseuille_isph_2d.toml");
-    opt.out_dir = (dir / "out").string();
-    opt.quiet = true;
-    opt.sets = channel_at(d);
-    REQUIRE(run_scene(opt) == kExitDone);
+    const auto frames =
+        run_poiseuille("poiseuille_isph_2d.toml", "poiseuille_" + std::to_string(cells), channel_at(kWidth / cells));
     std::array<double, 3> e{};
     for (int k = 0; k < 3; ++k) {
-      char name[32];
-      std::snprintf(name, sizeof name, "frame_%05d.h5", frames[k]);
-      e[k] = profile_error(dir / "out" / "frames" / name, times[k]);
+      e[k] = profile_error(frames[k], kTimes[k]);
       CHECK(e[k] < 0.01);
     }
     MESSAGE("l/d = ", cells, ": L2 error against Morris at t = 0.05, 0.1, 0.5 s: ", 100 * e[0], "%, ",
@@ -194,23 +206,13 @@ TEST_CASE("isph poiseuille: the Eulerian 3D pipe follows the Bessel start-up and
   // The series against its own limits: 0 at t = 0, the parabola once steady.
   CHECK(std::abs(szymanski(0.3 * kRadius, 0)) < 1e-7 * szymanski(0, 10));  // 200 terms: 3e-8 short
   CHECK(szymanski(0.3 * kRadius, 10) == doctest::Approx(kForce / (4 * kNu) * 0.91 * kRadius * kRadius).epsilon(1e-12));
-  const double times[] = {0.05, 0.1, 0.5};
-  const int frames[] = {1, 2, 10};
   std::vector<std::array<double, 3>> errors;
   for (int cells : {10, 16, 20}) {
-    const double d = kWidth / cells;
-    auto dir = test::scratch("poiseuille_pipe_" + std::to_string(cells));
-    RunOptions opt;
-    opt.scene = test::scene_path("poiseuille_isph_3d.toml");
-    opt.out_dir = (dir / "out").string();
-    opt.quiet = true;
-    opt.sets = pipe_at(d);
-    REQUIRE(run_scene(opt) == kExitDone);
+    const auto frames =
+        run_poiseuille("poiseuille_isph_3d.toml", "poiseuille_pipe_" + std::to_string(cells), pipe_at(kWidth / cells));
     std::array<double, 3> e{};
     for (int k = 0; k < 3; ++k) {
-      char name[32];
-      std::snprintf(name, sizeof name, "frame_%05d.h5", frames[k]);
-      const auto [error, across] = pipe_error(dir / "out" / "frames" / name, times[k]);
+      const auto [error, across] = pipe_error(frames[k], kTimes[k]);
       e[k] = error;
       CHECK(e[k] < 0.01);
       CHECK(across < 1e-4);  // axisymmetric: nothing flows across the axis

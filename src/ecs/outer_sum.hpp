@@ -40,11 +40,14 @@ struct OuterSum {
     }
   }
   Eigen::Matrix<double, R, C> matrix() const {
-    if constexpr (!kScalars) return packed;
-    Eigen::Matrix<double, R, C> out;
-    for (int r = 0; r < R; ++r)
-      for (int c = 0; c < C; ++c) out(r, c) = m[r][c];
-    return out;
+    if constexpr (!kScalars) {
+      return packed;
+    } else {
+      Eigen::Matrix<double, R, C> out;
+      for (int r = 0; r < R; ++r)
+        for (int c = 0; c < C; ++c) out(r, c) = m[r][c];
+      return out;
+    }
   }
 };
 
