@@ -3,8 +3,11 @@
 // definition, and bad input of the new keys.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
+#include <string>
 #include <numbers>
 
 #include "app/exit_codes.hpp"
@@ -87,6 +90,90 @@ TEST_CASE("isph: the rotating square's first pressure matches Colagrossi's serie
   MESSAGE("centre pressure after one step ", probes["p_centre"].back(), " Pa, series ", exact, " Pa");
   CHECK(exact == doctest::Approx(-147.34).epsilon(1e-4));  // the series itself (ISPH paper Fig. 6 starts there)
   CHECK(std::abs(probes["p_centre"].back() / exact - 1) < 0.03);
+}
+
+namespace {
+// The rotating square's interior at one frame: the particles that started in the inner square
+// |x|, |y| < 0.3 m (followed by id) and have no free-surface particle within 2 h, and their mean
+// numerical density over the whole support, sum_j W_ij / (the same sum on the starting lattice):
+// the fluid's volume, which an incompressible flow keeps. (Eq. 19's small radius d* is not used:
+// shear moves diagonal neighbours out past d* and that sum falls 3% with no change of volume.)
+struct InteriorDensity {
+  std::size_t count = 0;
+  double mean = 0;
+};
+InteriorDensity rotating_square_interior(const fs::path& run, int frame) {
+  auto path = [&](int k) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.h5", k);
+    return run / "frames" / name;
+  };
+  const double d = 0.02, h = 1.2 * d, support = 2 * h;
+  auto W = [&](double r) {  // the cubic spline without its constant (it cancels in the ratio)
+    const double q = r / h;
+    return q < 1 ? 1 - 1.5 * q * q + 0.75 * q * q * q : q < 2 ? 0.25 * std::pow(2 - q, 3) : 0.0;
+  };
+  double lattice = 0;
+  for (int a = -3; a <= 3; ++a)
+    for (int b = -3; b <= 3; ++b) lattice += W(d * std::hypot(a, b));
+  std::map<long, bool> started_inside;
+  auto x0 = test::read_dataset(path(0), "position").values, id0 = test::read_dataset(path(0), "id").values;
+  for (std::size_t i = 0; i < id0.size(); ++i)
+    started_inside[long(id0[i])] = std::max(std::abs(x0[3 * i]), std::abs(x0[3 * i + 1])) < 0.3;
+  auto x = test::read_dataset(path(frame), "position").values;
+  auto id = test::read_dataset(path(frame), "id").values;
+  auto surface = test::read_dataset(path(frame), "free_surface").values;
+  const std::size_t n = id.size();
+  InteriorDensity out;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!started_inside.at(long(id[i])) || surface[i] != 0) continue;
+    double sum = 0;
+    bool cut = false;
+    for (std::size_t j = 0; j < n; ++j) {
+      const double r = std::hypot(x[3 * j] - x[3 * i], x[3 * j + 1] - x[3 * i + 1]);
+      if (r >= support) continue;
+      sum += W(r);
+      cut = cut || surface[j] != 0;
+    }
+    if (cut) continue;
+    ++out.count;
+    out.mean += sum / lattice;
+  }
+  if (out.count) out.mean /= double(out.count);
+  return out;
+}
+}  // namespace
+
+// Issue 8's rotating square to omega t = 2 (the ISPH paper's Fig. 5 time) with density shifting,
+// the optimised shifting and none. The patch thins into four arms a few particles across (its
+// area of 1 m^2 spread along arms whose tips fly out to 0.71 sqrt(1 + (omega t)^2) m), so the
+// particles with a full support dwindle: 584 of the inner square's 900 at omega t = 2, 24 at 4,
+// none from 5 with every model (docs/isph.md): an interior density at omega t = 10 does not
+// exist to measure. Measured, mean interior density at omega t = 0.5 / 1 / 1.5 / 2: density
+// shifting 1.0029 / 1.0058 / 1.0087 / 1.0087; optimised 1.0063 / 1.0125 / 1.0141 / 1.0159 (printed,
+// not asserted: the paper finds OPS worse here too, its Fig. 5); none 1.0030 / 1.0065 / 1.0092 /
+// 1.0110. Asserted: the density model within 1% at every frame, with at least half the inner
+// square still interior.
+TEST_CASE("isph: density shifting keeps the rotating square's interior volume within 1% to omega t = 2") {
+  for (const char* model : {"density", "optimised", "none"}) {
+    auto out = test::scratch(std::string("isph_rotating_square_") + model);
+    RunOptions opt;
+    opt.scene = test::scene_path("rotating_square_isph_2d.toml");
+    opt.out_dir = out.string();
+    opt.quiet = true;
+    opt.end_time = 2.0;
+    opt.sets = {std::string("shifting.model=") + model, "output.fields=[\"free_surface\"]",
+                "output.interval=0.5"};
+    REQUIRE(run_scene(opt) == kExitDone);
+    for (int frame = 1; frame <= 4; ++frame) {
+      auto interior = rotating_square_interior(out, frame);
+      MESSAGE(std::string(model), ": omega t = ", 0.5 * frame, ": ", interior.count,
+              " interior particles, mean density ", interior.mean);
+      if (std::string(model) != "density") continue;
+      CHECK(interior.count >= 450);
+      CHECK(std::abs(interior.mean - 1) < 0.01);
+    }
+  }
 }
 
 // beta of eq. 19 makes the numerical density rho0 on the lattice: summed here from the cubic

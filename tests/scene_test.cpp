@@ -96,7 +96,7 @@ TEST_CASE("scene: wrong types, out-of-range and inconsistent values") {
   CHECK(error_of(base + "[output]\nfields = [1, 2]\n") == "bad.toml:17:10: 'fields' in [output] must be array of strings");
   CHECK(error_of(base, "spacing = 0.05", "spacing = 0.05 x") .find("bad.toml:7:16:") == 0);  // TOML syntax
   CHECK(error_of(base + "[shifting]\nmodel = \"density\"\n") ==
-        "bad.toml:17:9: [shifting] model = \"density\" is ISPH's (its beta, eqs. 19-25); wcsph takes none, fickian or xsph");
+        "bad.toml:17:9: [shifting] model = \"density\" is ISPH's (its beta, eqs. 19-25); wcsph takes none, fickian, optimised or xsph");
   CHECK(error_of(base + "[method]\nname = \"mps\"\n[shifting]\nmodel = \"fickian\"\n") ==
         "bad.toml:19:9: method mps has no particle shifting; leave [shifting] out");
 }

@@ -137,9 +137,11 @@ std::vector<SystemPtr<D>> isph_pipeline(const Scene& s, const IsphParameters<D>&
     ShiftingParameters<D> sp{p.kernel, p.domain, p.spacing, p.rho0, s.shifting_coefficient};
     list.push_back(std::make_shared<ShiftingDensity<D>>(sp));
     list.push_back(std::make_shared<DensityShifting<D>>(sp));
-  } else if (p.description == IsphDescription::Ale && s.shifting_model == "fickian") {
-    list.push_back(std::make_shared<FickianShifting<D>>(FickianShiftingParameters<D>{
-        p.kernel, p.domain, p.spacing, s.fickian_coefficient, s.anti_clumping, s.max_shift, true}));
+  } else if (p.description == IsphDescription::Ale &&
+             (s.shifting_model == "fickian" || s.shifting_model == "optimised")) {
+    list.push_back(std::make_shared<FickianShifting<D>>(
+        FickianShiftingParameters<D>{p.kernel, p.domain, p.spacing, s.fickian_coefficient, s.anti_clumping,
+                                     s.max_shift, true, s.shifting_model == "optimised"}));
   } else if (p.description == IsphDescription::Ale && s.shifting_model == "xsph") {
     list.push_back(std::make_shared<XsphShifting<D>>(
         XsphShiftingParameters<D>{p.kernel, p.domain, p.spacing, s.xsph_epsilon, s.max_shift}));

@@ -163,14 +163,15 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
   if (s.shifting_model == "xsph") {
     list.push_back(std::make_shared<XsphShifting<D>>(
         XsphShiftingParameters<D>{p.kernel, p.domain, p.spacing, s.xsph_epsilon, s.max_shift}));
-  } else if (s.shifting_model == "fickian") {
+  } else if (s.shifting_model == "fickian" || s.shifting_model == "optimised") {
     // Particle shifting after the step (issue 8: WCSPH may use ISPH's system): the free-surface
     // rule of I-SPH(2) marks where only the tangential part of the shift is kept. The velocity is
     // carried to the shifted place (Taylor); the density is not (delta-SPH's diffusion smooths
     // it; a correction is not measured yet).
     list.push_back(isph2_surface_detection<D>(method_context<D>(s, p.kernel)));
     list.push_back(std::make_shared<FickianShifting<D>>(FickianShiftingParameters<D>{
-        p.kernel, p.domain, p.spacing, s.fickian_coefficient, s.anti_clumping, s.max_shift, false}));
+        p.kernel, p.domain, p.spacing, s.fickian_coefficient, s.anti_clumping, s.max_shift, false,
+        s.shifting_model == "optimised"}));
   }
   if (s.fixed_dt <= 0)
     list.push_back(

@@ -279,7 +279,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.shifting_model = root["shifting"]["model"].value_or(std::string(isph ? "density" : "none"));
   if (sc.method == "wcsph" && sc.shifting_model == "density")
     val.fail(root["shifting"]["model"].node(), "shifting.model",
-             "[shifting] model = \"density\" is ISPH's (its beta, eqs. 19-25); wcsph takes none, fickian or xsph");
+             "[shifting] model = \"density\" is ISPH's (its beta, eqs. 19-25); wcsph takes none, fickian, optimised or xsph");
   if (mps && sc.shifting_model != "none")
     val.fail(root["shifting"]["model"].node(), "shifting.model", "method mps has no particle shifting; leave [shifting] out");
   sc.shifting_coefficient = *get("shifting", "coefficient").value<double>();

@@ -12,6 +12,14 @@
 // horizontally at C_shift = 0.005). On the free surface only the tangential part is kept (a
 // particle there has no neighbours outside, and grad C would push it out); the shift is capped at
 // `max_shift` d. Same interface as the density model: the velocity is carried to the new place.
+//
+// The optimised variant (OPS, Khayyer, Gotoh & Shimizu 2017, J. Comput. Phys. 332, as the ISPH
+// paper compares it in its Fig. 5) keeps only the tangential part in the whole free-surface
+// region, not only on the flagged particles: a particle with a surface particle inside its
+// support (the "vicinity") has a support cut by the surface too, and the normal part of its
+// grad C would still push it outwards, thinning the layer under the surface. The normal is the
+// one free-surface detection writes for every fluid particle, n_i = -L_i sum_j V_j gW_ij / |.|
+// (the corrected gradient of the kernel sum); in the vicinity it is the surface's normal.
 #include <cmath>
 #include <vector>
 
@@ -34,6 +42,7 @@ struct FickianShiftingParameters {
   double clumping = 0.2;     // R of the anti-clumping term, exponent 4 (Lind 2012)
   double max_shift = 0.2;    // cap, in spacings
   bool complete_walls = false;  // one wall layer with normals (ISPH): see the loop below
+  bool surface_vicinity = false;  // optimised (OPS): tangential only within a support of the surface
 };
 
 template <int D>
@@ -71,6 +80,7 @@ class FickianShifting final : public System<D> {
       thread_local std::vector<Vec<D>> g;
       const Stencil<D>& stencil = gathered_stencil(view, i);  // also for the velocity change below
       Vec<D> grad_c = Vec<D>::Zero();
+      bool tangential_only = surface[i] != 0;
       auto add = [&](const Vec<D>& r, double len, double factor, double volume) {
         if (len >= p_.kernel.support() || len == 0) return;
         double ratio = p_.kernel.w(len) / w_spacing_;
@@ -82,6 +92,8 @@ class FickianShifting final : public System<D> {
         // would push the fluid into the wall. The layers it lacks are completed on the fly, as
         // copies of the wall particle one and two spacings further out along its normal.
         const std::size_t j = stencil.neighbours[k];
+        if (p_.surface_vicinity && kind[j] == kFluid && surface[j] && stencil.len[k] < p_.kernel.support())
+          tangential_only = true;
         if (complete_walls && kind[j] == kWall)
           for (int layer = 1; layer <= 2; ++layer) {
             const Vec<D> r = stencil.r[k] + layer * p_.spacing * wall_normal[j];
@@ -90,7 +102,7 @@ class FickianShifting final : public System<D> {
           }
       }
       Vec<D> dr = -p_.coefficient * h * v[i].norm() * dt * grad_c;
-      if (surface[i]) dr -= dr.dot(normal[i]) * normal[i];
+      if (tangential_only) dr -= dr.dot(normal[i]) * normal[i];
       double len = dr.norm();
       if (len > cap) dr *= cap / len;
       shift[i] = dr;
