@@ -109,7 +109,7 @@ velocity = [-0.1, 0.0]
 // rows and pushes the rows beneath them outwards, thinning the layer under each surface; the
 // optimised model keeps only the tangential part wherever a surface particle is in the support,
 // so no particle moves across the layer.
-TEST_CASE("shifting: the optimised model moves no particle across a translating layer; Fickian does") {
+TEST_CASE("shifting: the optimised model moves no particle across a translating layer, the Fickian one does") {
   auto dir = test::scratch("ops_layer");
   const double d = 0.02;
   auto run = [&](const std::string& model) {

@@ -776,11 +776,10 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       sc.fixed_pressure.push_back(std::move(b));
     }
   }
-  if (sc.isph_confined && (!isph || sc.fixed_pressure.empty()))
-    val.fail(root["method"]["confined"].node(), "method.confined",
-             !isph ? "confined is for method isph"
-                   : "confined = true needs a [[fixed_pressure]] box: without a free surface nothing else sets the "
-                     "pressure's level");
+  // Without a [[fixed_pressure]] box the confined pressure equation has no Dirichlet row: the
+  // gauge (src/systems/pressure/pressure_gauge.hpp) sets its level, as in a periodic box.
+  if (sc.isph_confined && !isph)
+    val.fail(root["method"]["confined"].node(), "method.confined", "confined is for method isph");
   if (auto* arr = root["probe"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
       ProbeSpec p{*root["probe"][i]["name"].value<std::string>(), *root["probe"][i]["type"].value<std::string>(), {}};
