@@ -283,9 +283,7 @@ TEST_CASE("elastic: water hitting an elastic block exchanges momentum and keeps 
                                       : "--set method.solid_formulation=\"updated\"";
     const auto out = run((dir / "hit.toml").string(), sets, "elastic_momentum_run");
     auto momentum = [&](int frame, double* solid) {
-      char name[32];
-      std::snprintf(name, sizeof name, "frame_%05d.h5", frame);
-      auto f = std::filesystem::path(out) / "frames" / name;
+      auto f = test::frame_path(out, frame);
       auto m = test::read_dataset(f, "mass").values, v = test::read_dataset(f, "velocity").values,
            kind = test::read_dataset(f, "kind").values;
       double total = 0;
@@ -327,12 +325,10 @@ TEST_CASE("elastic: a run stopped at a checkpoint and resumed ends bit-identical
   r = test::run_command(bin() + " resume " + part + " --quiet --end-time 0.04");
   REQUIRE_MESSAGE(r.code == 0, r.output);
   for (int k = 1; k <= 4; ++k) {
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%05d.h5", k);
     for (const char* column : {"position", "velocity", "stress"}) {
-      const auto a = test::read_dataset(std::filesystem::path(full) / "frames" / name, column).values;
-      const auto b = test::read_dataset(std::filesystem::path(part) / "frames" / name, column).values;
-      CHECK_MESSAGE(a == b, name << ": " << column << " differs from the unstopped run");
+      const auto a = test::read_dataset(test::frame_path(full, k), column).values;
+      const auto b = test::read_dataset(test::frame_path(part, k), column).values;
+      CHECK_MESSAGE(a == b, "frame " << k << ": " << column << " differs from the unstopped run");
     }
   }
 }

@@ -165,10 +165,8 @@ double taylor_green_energy_error(const std::string& extra_sets, double until, do
 // L2 distance of the particles' velocities from the exact field at their positions, relative to
 // the exact field's L2, in frame `frame` (at time t) of a Taylor-Green run.
 double taylor_green_velocity_error(const std::filesystem::path& run, int frame, double t) {
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%05d.h5", frame);
-  auto x = test::read_dataset(run / "frames" / name, "position").values;
-  auto v = test::read_dataset(run / "frames" / name, "velocity").values;
+  auto x = test::read_dataset(test::frame_path(run, frame), "position").values;
+  auto v = test::read_dataset(test::frame_path(run, frame), "velocity").values;
   const double decay = std::exp(-8 * kPi * kPi * 0.01 * t);
   double diff = 0, norm = 0;
   for (std::size_t i = 0; 3 * i < x.size(); ++i) {

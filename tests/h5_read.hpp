@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 #include <hdf5.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -35,6 +36,13 @@ inline Dataset read_dataset(const std::filesystem::path& file, const std::string
   H5Dclose(d);
   H5Fclose(f);
   return out;
+}
+
+// Frame k of a run: RUN/frames/frame_NNNNN.h5 (five digits, as the output writes them).
+inline std::filesystem::path frame_path(const std::filesystem::path& run, int k) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05d.h5", k);
+  return run / "frames" / name;
 }
 
 // The last frame of a run (frames/frame_NNNNN.h5, the highest number).

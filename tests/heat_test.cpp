@@ -57,12 +57,6 @@ double flux_and_plate(double y, double t) {
   return T;
 }
 
-std::string frame_name(int k) {
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%05d.h5", k);
-  return name;
-}
-
 // Largest |T - reference(y, t)| over the fluid of a frame.
 template <class Reference>
 double max_temperature_error(const std::filesystem::path& frame, double t, Reference&& reference) {
@@ -106,8 +100,8 @@ TEST_CASE(
     auto r = test::run_command(bin() + " run " + test::scene_path("conduction_2d.toml") + " --quiet --out " +
                                dir.string() + " " + conduction_at(kL / cells));
     REQUIRE_MESSAGE(r.code == 0, r.output);
-    const double early = max_temperature_error(dir / "frames" / frame_name(1), 34.9, two_plates);
-    const double late = max_temperature_error(dir / "frames" / frame_name(4), 139.6, two_plates);
+    const double early = max_temperature_error(test::frame_path(dir, 1), 34.9, two_plates);
+    const double late = max_temperature_error(test::frame_path(dir, 4), 139.6, two_plates);
     MESSAGE("L/d = ", cells, ": max |T - series| = ", early, " K at 0.05 L^2/alpha, ", late,
             " K at 0.2 L^2/alpha (range 20 K)");
     CHECK(early < 0.01 * (kT1 - kT2));
@@ -130,7 +124,7 @@ TEST_CASE(
   REQUIRE_MESSAGE(r.code == 0, r.output);
   // q L / k = 20 K across the slab; at 600 s the profile is 88% of the way to the steady one.
   for (int k : {1, 4}) {
-    const double e = max_temperature_error(dir / "out" / "frames" / frame_name(k), 150.0 * k, flux_and_plate);
+    const double e = max_temperature_error(test::frame_path(dir / "out", k), 150.0 * k, flux_and_plate);
     MESSAGE("t = ", 150 * k, " s: max |T - series| = ", e, " K");
     CHECK(e < 0.01 * kQ * kL / kK);
   }
@@ -182,7 +176,7 @@ max = [0.04, 0.04]
                              (dir / "out").string());
   REQUIRE_MESSAGE(r.code == 0, r.output);
   auto heat = [&](int k, double* hottest) {
-    auto f = dir / "out" / "frames" / frame_name(k);
+    auto f = test::frame_path(dir / "out", k);
     auto m = test::read_dataset(f, "mass").values, T = test::read_dataset(f, "temperature").values,
          kind = test::read_dataset(f, "kind").values;
     double sum = 0;
@@ -214,7 +208,7 @@ TEST_CASE(
                                " --quiet --out " + dir.string() + " --set time.end=0.4 " + extra);
     REQUIRE_MESSAGE(r.code == 0, r.output);
     Run out;
-    auto f = dir / "frames" / frame_name(8);  // t = 0.4 s
+    auto f = test::frame_path(dir, 8);  // t = 0.4 s
     auto x = test::read_dataset(f, "position").values, v = test::read_dataset(f, "velocity").values,
          T = test::read_dataset(f, "temperature").values, mu = test::read_dataset(f, "viscosity").values,
          kind = test::read_dataset(f, "kind").values;

@@ -103,11 +103,7 @@ struct InteriorDensity {
   double mean = 0;
 };
 InteriorDensity rotating_square_interior(const fs::path& run, int frame) {
-  auto path = [&](int k) {
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%05d.h5", k);
-    return run / "frames" / name;
-  };
+  auto path = [&](int k) { return test::frame_path(run, k); };
   const double d = 0.02, h = 1.2 * d, support = 2 * h;
   auto W = [&](double r) {  // the cubic spline without its constant (it cancels in the ratio)
     const double q = r / h;

@@ -55,11 +55,7 @@ std::array<std::filesystem::path, 3> run_poiseuille(const std::string& scene, co
   REQUIRE(run_scene(opt) == kExitDone);
   std::array<std::filesystem::path, 3> frames;
   const int numbers[] = {1, 2, 10};
-  for (int k = 0; k < 3; ++k) {
-    char file[32];
-    std::snprintf(file, sizeof file, "frame_%05d.h5", numbers[k]);
-    frames[k] = dir / "out" / "frames" / file;
-  }
+  for (int k = 0; k < 3; ++k) frames[k] = test::frame_path(dir / "out", numbers[k]);
   return frames;
 }
 

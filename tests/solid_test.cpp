@@ -147,9 +147,7 @@ TEST_CASE("solid: a sliding plate drives Couette flow that follows the start-up 
   // resolution); measured 0.38% and 0.26%.
   for (double t : {0.05, 0.2}) {
     CAPTURE(t);
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%05d.h5", int(std::lround(t / 0.05)));
-    const auto frame = dir / "frames" / name;
+    const auto frame = test::frame_path(dir, int(std::lround(t / 0.05)));
     auto kind = test::read_dataset(frame, "kind").values, x = test::read_dataset(frame, "position").values,
          v = test::read_dataset(frame, "velocity").values;
     double sum = 0;
