@@ -195,6 +195,8 @@ TEST_CASE("expression: Taylor-Green vortices set up by formulas decay at the vis
   // points made the pressure grow stripes from t = 0.064 s, and the weaker shifting never repaired
   // it (docs/isph.md, "Open").
   std::filesystem::path run;
+  // Over the first 0.2 s (the energy falls 27%) the bound the suite has always had, 1%: measured 0.65%.
+  CHECK(taylor_green_energy_error(" --set time.end=0.2", 0.2, end) < 0.01);
   CHECK(taylor_green_energy_error("", 1.0, end, &run) < 0.03);
   for (double t : {0.2, 0.5, 1.0}) {
     const double error = taylor_green_velocity_error(run, static_cast<int>(std::lround(t / 0.02)), t);
