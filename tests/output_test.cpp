@@ -99,7 +99,7 @@ TEST_CASE("output: frames, xdmf, summary, profile, probes and trace are written 
 
   auto profile = test::read_text(out / "profile.json");
   for (auto sys : {"neighbour_search", "wcsph_pair_forces", "density_gradient_renormalised",
-                   "wall_boundary_adami", "integrate_corrector", "time_step_control", "output"})
+                   "wall_boundary_adami", "integrate_leapfrog", "time_step_control", "output"})
     CHECK_MESSAGE(profile.find(std::string("\"name\": \"") + sys + "\"") != std::string::npos, sys);
   CHECK(test::read_text(out / "trace.json").find("\"ph\": \"X\"") != std::string::npos);
 
@@ -183,7 +183,7 @@ TEST_CASE("failure: a particle leaving the domain names itself and the system th
   CHECK(run_scene(opt) == kExitNumericalFailure);
   auto message = test::json_raw(test::read_text(dir / "out" / "summary.json"), "message");
   CHECK(message.find("left the domain") != std::string::npos);
-  CHECK(message.find("after system 'integrate_corrector'") != std::string::npos);
+  CHECK(message.find("after system 'integrate_leapfrog'") != std::string::npos);  // WCSPH's default
   // Free fall from y = 0.2 + d/2 reaches y < 0 after about sqrt(2 * 0.225 / g) = 0.21 s.
   auto time = test::json_number(test::read_text(dir / "out" / "summary.json"), "simulated_time");
   CHECK(std::abs(time / 0.214 - 1) < 0.05);  // relative (doctest's Approx adds 1 to its scale)

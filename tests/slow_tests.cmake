@@ -66,7 +66,7 @@ set_tests_properties("heat: a heat-flux wall and a fixed-temperature plate follo
                      PROPERTIES LABELS slow COST 10)
 set_tests_properties("leapfrog: one force evaluation per step, the dam-break criterion and the same front as the midpoint"
                      PROPERTIES LABELS slow COST 12)
-set_tests_properties("energy: a WCSPH sloshing tank with the leapfrog integrator never gains energy and keeps the linear period"
+set_tests_properties("energy: a WCSPH sloshing tank with the midpoint integrator never gains energy and keeps the linear period"
                      PROPERTIES LABELS slow COST 14)
 set_tests_properties("elastic: a clamped plate swings at the Euler-Bernoulli period within 5% at H/d = 16 and 20"
                      PROPERTIES LABELS slow COST 50)

@@ -65,6 +65,14 @@ double thermal_step_limit(const Scene& s, const WcsphParameters<D>& p) {
   return s.conductivity > 0 ? heat_parameters<D>(s, p.kernel, p.domain).step_limit(p.rho0) : 0.0;
 }
 
+// The step control of the scene's rule and integrator (the leapfrog's diffusion limits are half
+// the midpoint's: time_step.hpp).
+template <int D>
+TimeStepControl<D> step_control(const Scene& s, const WcsphParameters<D>& p) {
+  return TimeStepControl<D>(p, s.cfl, thermal_step_limit<D>(s, p), s.step_rule == "seed001",
+                            s.integrator == "leapfrog" ? 0.5 : 1.0);
+}
+
 // A rheology model's first step: the largest viscosity at rest over the starting temperatures
 // (later steps take the largest of the column).
 template <int D>
@@ -173,9 +181,7 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
         p.kernel, p.domain, p.spacing, s.fickian_coefficient, s.anti_clumping, s.max_shift, false,
         s.shifting_model == "optimised"}));
   }
-  if (s.fixed_dt <= 0)
-    list.push_back(
-        std::make_shared<TimeStepControl<D>>(p, s.cfl, thermal_step_limit<D>(s, p), s.step_rule == "seed001"));
+  if (s.fixed_dt <= 0) list.push_back(std::make_shared<TimeStepControl<D>>(step_control<D>(s, p)));
   return list;
 }
 
@@ -188,8 +194,7 @@ MethodSetup<D> build_wcsph(const Scene& s, World<D>& world, const PipelineOption
   MethodSetup<D> m;
   m.context = method_context<D>(s, p.kernel);
   m.pipeline = wcsph_pipeline<D>(s, p, world);
-  m.first_dt =
-      TimeStepControl<D>(p, s.cfl, thermal_step_limit<D>(s, p), s.step_rule == "seed001").limit(0.0, p.gravity.norm());
+  m.first_dt = step_control<D>(s, p).limit(0.0, p.gravity.norm());
   if (s.models_heat()) m.frame_fields.push_back("temperature");
   if (p.variable_viscosity) m.frame_fields.insert(m.frame_fields.end(), {"viscosity", "shear_rate"});
   if (!s.elastic.empty()) m.frame_fields.insert(m.frame_fields.end(), {"stress", "displacement", "solid_pressure", "elastic_body"});

@@ -200,7 +200,7 @@ struct Scene {
   SweSpec swe;
   double end_time = 0, cfl = 0.2, fixed_dt = 0, dt_min = 1e-9;
   std::string step_rule = "cfl";       // wcsph: cfl or seed001 (seed 001 eq. 35)
-  std::string integrator = "midpoint";  // wcsph: midpoint or leapfrog (seed 001 eqs. 15-17)
+  std::string integrator = "leapfrog";  // wcsph: leapfrog (seed 001 eqs. 15-17) or midpoint
   double velocity_smoothing = 0;        // wcsph: XSPH epsilon (seed 001 eq. 36); 0: off
   long long max_steps = 0;
   double output_interval = 0, probe_interval = 0, checkpoint_interval = 0;
