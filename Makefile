@@ -80,7 +80,7 @@ plots: build py-deps
 	  /usr/bin/python3 tools/plot_sweep.py $$csv $$(dirname $$csv)/sweep.png $$keys || exit 1; \
 	done
 
-# docs/tradeoffs.md: the speed-accuracy sweeps (tools/tradeoffs.py; about five minutes on 2 cores;
+# docs/tradeoffs.md: the speed-accuracy sweeps (tools/tradeoffs.py; about three minutes on 2 cores;
 # resumable: delete out/tradeoffs to measure anew).
 tradeoffs: build py-deps
 	/usr/bin/python3 tools/tradeoffs.py --build $(BUILD) --out out/tradeoffs --doc docs/tradeoffs.md
