@@ -1,7 +1,7 @@
-// Seed 001's leapfrog integrator (eqs. 15-17), XSPH velocity smoothing (eq. 36) and adaptive step
-// (eq. 35) as WCSPH options (issue 14; docs/wcsph.md). The leapfrog evaluates the forces once per
-// step where the midpoint integrator evaluates them twice; at the same step (the same CFL) it must
-// give the same physics: the dam-break criterion at a/d = 20 and 40, the hydrostatic tank within
+// Seed 001's leapfrog integrator (eqs. 15-17, WCSPH's default since 2026-11-24), XSPH velocity
+// smoothing (eq. 36) and adaptive step (eq. 35) (issue 14; docs/wcsph.md). The leapfrog evaluates
+// the forces once per step where the midpoint integrator evaluates them twice; at the same step
+// (the same CFL) it must give the same physics: the dam-break criterion at a/d = 20 and 40, the hydrostatic tank within
 // 1%, and a run stopped and resumed from its checkpoint bit-identical to one that was not.
 #include <doctest/doctest.h>
 

@@ -148,3 +148,23 @@ TEST_CASE("run: bad input exits with code 2, says where, and creates no output d
   CHECK(r.output.find("no per-particle field 'temperature'") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir / "out"));
 }
+
+// WCSPH's integrator: the leapfrog unless the scene names one; a scene with heat conduction or
+// elastic bodies that names none takes the midpoint (the leapfrog does not move solids and halves
+// the conduction step); other methods refuse the key.
+TEST_CASE("scene: the integrator defaults to the leapfrog, to the midpoint with heat or elastic bodies") {
+  auto path = test::scratch("scene_integrator") / "integrator.toml";
+  test::write_text(path, valid_with_domain_min());
+  CHECK(load_scene(path.string()).integrator == "leapfrog");
+  CHECK(load_scene(path.string(), {"method.integrator=midpoint"}).integrator == "midpoint");
+  CHECK(load_scene(path.string(), {"material.conductivity=0.6", "material.temperature=300.0"}).integrator ==
+        "midpoint");
+  CHECK(load_scene(path.string(), {"material.conductivity=0.6", "material.temperature=300.0",
+                                   "method.integrator=leapfrog"})
+            .integrator == "leapfrog");
+  auto elastic = test::scratch("scene_integrator") / "elastic.toml";
+  test::write_text(elastic, test::read_text(test::scene_path("elastic_plate_2d.toml")));
+  CHECK(load_scene(elastic.string()).integrator == "midpoint");
+  CHECK(error_of(valid_with_domain_min(), "", "", {"method.name=mps", "method.integrator=leapfrog"})
+            .find("[method] integrator is for method wcsph") != std::string::npos);
+}
