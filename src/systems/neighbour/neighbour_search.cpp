@@ -118,7 +118,7 @@ void build_neighbour_list(const Domain<D>& domain, double radius, std::span<cons
                 if (box2 > r2) continue;
               }
               auto test = [&](auto own_cell) {
-                for (std::size_t q = seg.begin; q < seg.end; ++q) {
+                auto kept = [&](std::size_t q) -> std::uint32_t {
                   double r2q;
                   if constexpr (kPeriodic) {
                     Vec<D> xq;
@@ -131,11 +131,26 @@ void build_neighbour_list(const Domain<D>& domain, double radius, std::span<cons
                       r2q += e * e;
                     }
                   }
-                  dst[n] = cand[q];
                   bool keep = r2q <= r2;
                   if constexpr (decltype(own_cell)::value) keep &= cand[q] != i;
                   if constexpr (kSkipping) keep &= (cand_keep[q] | i_kept) != 0;
-                  n += static_cast<std::uint32_t>(keep);
+                  return static_cast<std::uint32_t>(keep);
+                };
+                // Four candidates per round: each is written after the kept ones before it
+                // (a later write overwrites one that was not kept), and the count advances once
+                // per round, so the chain of dependent additions through n is a quarter as long.
+                std::size_t q = seg.begin;
+                for (; q + 4 <= seg.end; q += 4) {
+                  const std::uint32_t k0 = kept(q), k1 = kept(q + 1), k2 = kept(q + 2), k3 = kept(q + 3);
+                  dst[n] = cand[q];
+                  dst[n + k0] = cand[q + 1];
+                  dst[n + k0 + k1] = cand[q + 2];
+                  dst[n + k0 + k1 + k2] = cand[q + 3];
+                  n += k0 + k1 + k2 + k3;
+                }
+                for (; q < seg.end; ++q) {
+                  dst[n] = cand[q];
+                  n += kept(q);
                 }
               };
               if (seg.own)
