@@ -86,7 +86,9 @@ TEST_CASE("energy: a WCSPH sloshing tank never gains energy and keeps the linear
   check_sloshing_energy("wcsph");
 }
 
-TEST_CASE("energy: a WCSPH sloshing tank with the midpoint integrator never gains energy and keeps the linear period") {
+TEST_CASE(
+    "energy: a WCSPH sloshing tank with the midpoint integrator never gains energy and keeps the linear "
+    "period") {
   check_sloshing_energy("wcsph", {"method.integrator=midpoint"});
 }
 

@@ -1,8 +1,8 @@
 // Seed 001's leapfrog integrator (eqs. 15-17, WCSPH's default since 2026-11-24), XSPH velocity
 // smoothing (eq. 36) and adaptive step (eq. 35) (issue 14; docs/wcsph.md). The leapfrog evaluates
 // the forces once per step where the midpoint integrator evaluates them twice; at the same step
-// (the same CFL) it must give the same physics: the dam-break criterion at a/d = 20 and 40, the hydrostatic tank within
-// 1%, and a run stopped and resumed from its checkpoint bit-identical to one that was not.
+// (the same CFL) it must give the same physics: the dam-break criterion at a/d = 20 and 40, the hydrostatic
+// tank within 1%, and a run stopped and resumed from its checkpoint bit-identical to one that was not.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -55,7 +55,8 @@ TEST_CASE(
   // Against the midpoint at a/d = 20, at the same steps (the same CFL limit): both are second
   // order and the acoustic step is small against the flow's time scale, so the fronts agree
   // far inside the 1% asserted (measured 0.002%; a/d = 20 and 40 differ by 2.5%).
-  auto [midpoint, midpoint_steps, midpoint_calls] = run("midpoint_20", "--set particles.spacing=0.0125 --set method.integrator=midpoint");
+  auto [midpoint, midpoint_steps, midpoint_calls] =
+      run("midpoint_20", "--set particles.spacing=0.0125 --set method.integrator=midpoint");
   CHECK(midpoint_calls == 2 * midpoint_steps);
   const double against = test::front_difference(coarse, midpoint);
   MESSAGE("leapfrog against midpoint at a/d = 20: ", 100 * against, "%; steps ", steps, " and ",

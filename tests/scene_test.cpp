@@ -159,8 +159,8 @@ TEST_CASE("scene: the integrator defaults to the leapfrog, to the midpoint with 
   CHECK(load_scene(path.string(), {"method.integrator=midpoint"}).integrator == "midpoint");
   CHECK(load_scene(path.string(), {"material.conductivity=0.6", "material.temperature=300.0"}).integrator ==
         "midpoint");
-  CHECK(load_scene(path.string(), {"material.conductivity=0.6", "material.temperature=300.0",
-                                   "method.integrator=leapfrog"})
+  CHECK(load_scene(path.string(),
+                   {"material.conductivity=0.6", "material.temperature=300.0", "method.integrator=leapfrog"})
             .integrator == "leapfrog");
   auto elastic = test::scratch("scene_integrator") / "elastic.toml";
   test::write_text(elastic, test::read_text(test::scene_path("elastic_plate_2d.toml")));

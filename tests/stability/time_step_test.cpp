@@ -30,9 +30,10 @@ std::string fixed_dt(double dt) {
 constexpr double kMass = 1000 * 0.5 * 0.5, kG = 9.81, kDepth = 0.5, kSpacing = 0.0125;
 
 // extra: overrides of both runs (the integrator); cfl: the limit's CFL number.
-void check_step_limits(const std::string& method, const std::string& scene, std::vector<std::string> extra = {},
-                       const char* cfl = "time.cfl=1.0") {
-  const std::string label = method + (extra.empty() ? "" : "_" + extra.front().substr(extra.front().find('=') + 1));
+void check_step_limits(const std::string& method, const std::string& scene,
+                       std::vector<std::string> extra = {}, const char* cfl = "time.cfl=1.0") {
+  const std::string label =
+      method + (extra.empty() ? "" : "_" + extra.front().substr(extra.front().find('=') + 1));
   auto with = [&](std::vector<std::string> sets) {
     sets.insert(sets.end(), extra.begin(), extra.end());
     return sets;
@@ -41,8 +42,9 @@ void check_step_limits(const std::string& method, const std::string& scene, std:
   REQUIRE(first.code == kExitDone);
   const double limit = test::json_number(first.summary, "last_dt");
   for (int factor : {1, 2}) {
-    auto o = test::run_shipped(label + "_dt" + std::to_string(factor), scene,
-                               with({"time.end=1.0", "output.probe_interval=0.01", fixed_dt(factor * limit)}));
+    auto o =
+        test::run_shipped(label + "_dt" + std::to_string(factor), scene,
+                          with({"time.end=1.0", "output.probe_interval=0.01", fixed_dt(factor * limit)}));
     INFO(label << " at " << factor << "x the limit " << limit << " s");
     if (factor == 2 && o.code != kExitDone) {
       const std::string message = test::json_raw(o.summary, "message");

@@ -28,9 +28,12 @@ class TimeStepControl final : public System<D> {
  public:
   // thermal_limit: the heat conduction's fixed step limit (0: none); diffusion_scale: the
   // integrator's share of the diffusion limits (1 midpoint, 0.5 leapfrog).
-  TimeStepControl(const WcsphParameters<D>& p, double cfl, double thermal_limit = 0, bool seed001_rule = false,
-                  double diffusion_scale = 1)
-      : p_(p), cfl_(cfl), thermal_limit_(diffusion_scale * thermal_limit), seed001_(seed001_rule),
+  TimeStepControl(const WcsphParameters<D>& p, double cfl, double thermal_limit = 0,
+                  bool seed001_rule = false, double diffusion_scale = 1)
+      : p_(p),
+        cfl_(cfl),
+        thermal_limit_(diffusion_scale * thermal_limit),
+        seed001_(seed001_rule),
         diffusion_scale_(diffusion_scale) {}
   std::string name() const override { return "time_step_control"; }
   Access access() const override {
