@@ -103,7 +103,6 @@ struct InteriorDensity {
   double mean = 0;
 };
 InteriorDensity rotating_square_interior(const fs::path& run, int frame) {
-  auto path = [&](int k) { return test::frame_path(run, k); };
   const double d = 0.02, h = 1.2 * d, support = 2 * h;
   auto W = [&](double r) {  // the cubic spline without its constant (it cancels in the ratio)
     const double q = r / h;
@@ -113,12 +112,13 @@ InteriorDensity rotating_square_interior(const fs::path& run, int frame) {
   for (int a = -3; a <= 3; ++a)
     for (int b = -3; b <= 3; ++b) lattice += W(d * std::hypot(a, b));
   std::map<long, bool> started_inside;
-  auto x0 = test::read_dataset(path(0), "position").values, id0 = test::read_dataset(path(0), "id").values;
+  auto x0 = test::read_dataset(test::frame_path(run, 0), "position").values,
+       id0 = test::read_dataset(test::frame_path(run, 0), "id").values;
   for (std::size_t i = 0; i < id0.size(); ++i)
     started_inside[long(id0[i])] = std::max(std::abs(x0[3 * i]), std::abs(x0[3 * i + 1])) < 0.3;
-  auto x = test::read_dataset(path(frame), "position").values;
-  auto id = test::read_dataset(path(frame), "id").values;
-  auto surface = test::read_dataset(path(frame), "free_surface").values;
+  auto x = test::read_dataset(test::frame_path(run, frame), "position").values;
+  auto id = test::read_dataset(test::frame_path(run, frame), "id").values;
+  auto surface = test::read_dataset(test::frame_path(run, frame), "free_surface").values;
   const std::size_t n = id.size();
   InteriorDensity out;
   for (std::size_t i = 0; i < n; ++i) {

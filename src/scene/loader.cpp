@@ -315,12 +315,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.max_steps = *get("time", "max_steps").value<long long>();
   sc.dt_min = *get("time", "dt_min").value<double>();
   sc.step_rule = *get("time", "step_rule").value<std::string>();
-  // The leapfrog is WCSPH's default (the same answer as the midpoint at half the force
-  // evaluations: docs/wcsph.md). Elastic bodies are moved by the midpoint's stages only, and the
-  // leapfrog's conduction step is half the midpoint's (time_step.hpp), so a scene with either
-  // that does not name an integrator takes the midpoint.
   sc.integrator = *get("method", "integrator").value<std::string>();
-  if (!integrator_named && root["elastic"]) sc.integrator = "midpoint";
   sc.velocity_smoothing = *get("method", "velocity_smoothing").value<double>();
   for (auto [sec, key, set] : {std::tuple{"time", "step_rule", sc.step_rule != "cfl"},
                                std::tuple{"method", "integrator", integrator_named},
@@ -944,7 +939,11 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
                      "); use [solver] preconditioner = \"jacobi\" with a periodic domain");
   if (sc.fixed_dt > sc.end_time) val.fail(root["time"]["dt"].node(), "time.dt", "time.dt is larger than time.end");
   load_heat_and_rheology(root, val, sc);
-  if (!integrator_named && sc.conductivity > 0) sc.integrator = "midpoint";
+  // The leapfrog is WCSPH's default (the same answer as the midpoint at half the force
+  // evaluations: docs/wcsph.md). Elastic bodies are moved by the midpoint's stages only, and the
+  // leapfrog's conduction step is half the midpoint's (time_step.hpp), so a scene with either
+  // that does not name an integrator takes the midpoint (decided here, once the heat is known).
+  if (!integrator_named && (root["elastic"] || sc.conductivity > 0)) sc.integrator = "midpoint";
   load_elastic(root, val, sc);
   // The neighbour search's cell grid covers the domain with cells of the support radius (4
   // bytes per cell): a domain far larger than the particles' extent at a tiny spacing (1e-6 m
