@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
+#include <type_traits>
 
 #include "solvers/vector_ops.hpp"
 
@@ -15,13 +17,41 @@ namespace {
 
 using Coord = std::array<std::int64_t, 3>;
 
+// Storage kept from one setup to the next (the pressure pipeline rebuilds the hierarchy every
+// step): arrays over 32 MiB are mapped afresh by glibc at every allocation, and the kernel's
+// zeroing of their pages was 12% of an MPS step at 1.3M particles. Written in parallel, so no
+// serial zero-fill either.
+template <class U>
+struct Buffer {
+  std::unique_ptr<U[]> data;
+  std::size_t capacity = 0;
+  U* ensure(std::size_t n) {
+    if (n > capacity) {
+      data = std::make_unique_for_overwrite<U[]>(n);
+      capacity = n;
+    }
+    return data.get();
+  }
+  std::size_t bytes() const { return capacity * sizeof(U); }
+};
+
 template <class T>
 struct Level {
-  CsrMatrix<T> A;
+  CsrMatrix<T> A;     // the coarse levels' own matrices; at level 0 empty (see values0)
+  CsrView<T> view;    // what the cycle reads: A, or at level 0 the caller's structure
+  Buffer<T> values0;  // level 0 in float: the caller's values, converted
   std::vector<T> inverse_diagonal;
   std::vector<std::uint32_t> to_coarse;                  // this level's element -> next level's
   std::vector<std::uint64_t> member_offsets{0};          // next level's element -> members here
   std::vector<std::uint32_t> members;
+  // A P (this level's rows, the next level's columns; 3^D slots per row, unused slots point at
+  // the row's own aggregate with value 0), kept where it is much narrower than A: after the
+  // coarse correction z + P e the first post-smoothing sweep needs A (z + P e) = A z + (A P) e,
+  // and A z is the residual's product from before the correction, so the sweep reads A P's
+  // 3^D entries instead of A's (2D MPS: 9 instead of about 30 per row).
+  std::size_t ap_slots = 0;  // 0: not kept
+  Buffer<std::uint32_t> ap_col;
+  Buffer<T> ap_val;
   mutable std::vector<T> r, z, tmp;
 };
 
@@ -63,61 +93,113 @@ std::vector<Coord> aggregate(const std::vector<Coord>& q, int D, std::vector<std
 // A_c = scale * P^T A P, row by row: each coarse row gathers its members' rows into the 3^D
 // slots given by the bucket offset of the column's coarse element (Algorithm 1, no atomics).
 template <class T>
-CsrMatrix<T> galerkin(const CsrMatrix<T>& A, const std::vector<std::uint32_t>& to_coarse,
-                      const std::vector<std::uint64_t>& offsets, const std::vector<std::uint32_t>& members,
-                      const std::vector<Coord>& coarse, int D, double scale) {
-  const std::size_t nc = coarse.size();
+struct GalerkinScratch {
+  Buffer<double> val;
+  Buffer<std::int64_t> col;
+};
+
+// q: the fine elements' bucket coordinates at the coarse level's resolution (the aggregate of j
+// has coordinates q[j]), read per entry beside to_coarse instead of through it. inverse_diagonal
+// (optional) receives 1 / A_ii of the fine rows from the same pass over A.
+template <class T>
+void galerkin(const CsrView<T>& A, const std::vector<std::uint32_t>& to_coarse,
+              const std::vector<std::uint64_t>& offsets, const std::vector<std::uint32_t>& members,
+              const std::vector<Coord>& q, std::size_t nc, int D, double scale, std::uint32_t* ap_col,
+              T* ap_val, T* inverse_diagonal, GalerkinScratch<T>& scratch, CsrMatrix<T>& Ac) {
   const int slots = D == 2 ? 9 : 27;
-  std::vector<double> val(nc * slots, 0.0);
-  std::vector<std::int64_t> col(nc * slots, -1);
-  tbb::parallel_for(std::size_t(0), nc, [&](std::size_t I) {
-    for (auto m = offsets[I]; m < offsets[I + 1]; ++m) {
-      std::uint32_t i = members[m];
-      for (auto k = A.row_ptr[i]; k < A.row_ptr[i + 1]; ++k) {
-        std::uint32_t J = to_coarse[A.col[k]];
-        int slot = 0, stride = 1;
-        for (int a = 0; a < D; ++a, stride *= 3) {
-          std::int64_t d = coarse[J][a] - coarse[I][a] + 1;
-          if (d < 0 || d > 2) throw std::invalid_argument("multigrid: a matrix entry spans more than one bucket; the bucket width must be at least the influence radius");
-          slot += int(d) * stride;
-        }
-        val[I * slots + slot] += A.val[k];
-        col[I * slots + slot] = J;
-      }
-    }
-  });
-  CsrMatrix<T> Ac;
+  double* val = scratch.val.ensure(nc * slots);
+  std::int64_t* col = scratch.col.ensure(nc * slots);
+  tbb::parallel_for(std::size_t(0), nc,
+                    [&](std::size_t I) {
+                      std::array<double, 27> coarse_val{};
+                      std::array<std::int64_t, 27> coarse_col;
+                      coarse_col.fill(-1);
+                      for (auto m = offsets[I]; m < offsets[I + 1]; ++m) {
+                        std::uint32_t i = members[m];
+                        const Coord& qi = q[i];
+                        std::array<double, 27> row_val{};
+                        std::array<std::uint32_t, 27> row_col;
+                        row_col.fill(static_cast<std::uint32_t>(I));
+                        std::uint32_t used = 0;  // bit s: slot s holds an entry (possibly summing to zero)
+                        T diagonal = 0;
+                        for (auto k = A.row_ptr[i]; k < A.row_ptr[i + 1]; ++k) {
+                          const std::uint32_t j = A.col[k];
+                          const Coord& qj = q[j];
+                          int slot = 0, stride = 1;
+                          for (int a = 0; a < D; ++a, stride *= 3) {
+                            std::int64_t d = qj[a] - qi[a] + 1;
+                            if (d < 0 || d > 2) throw std::invalid_argument("multigrid: a matrix entry spans more than one bucket; the bucket width must be at least the influence radius");
+                            slot += int(d) * stride;
+                          }
+                          row_val[slot] += A.val[k];
+                          row_col[slot] = to_coarse[j];
+                          used |= 1u << slot;
+                          if (j == i) diagonal += A.val[k];
+                        }
+                        if (inverse_diagonal) inverse_diagonal[i] = T(1) / diagonal;
+                        for (int s = 0; s < slots; ++s)
+                          if (used >> s & 1u) {
+                            coarse_val[s] += row_val[s];
+                            coarse_col[s] = row_col[s];
+                          }
+                        if (ap_col)
+                          for (int s = 0; s < slots; ++s) {
+                            ap_col[std::size_t(i) * slots + s] = row_col[s];
+                            ap_val[std::size_t(i) * slots + s] = static_cast<T>(row_val[s]);
+                          }
+                      }
+                      std::copy_n(coarse_val.begin(), slots, val + I * slots);
+                      std::copy_n(coarse_col.begin(), slots, col + I * slots);
+                    });
+  // Compaction in parallel: count the used slots per row, offsets, then each row sorted by column.
   Ac.rows = Ac.cols = nc;
   Ac.row_ptr.assign(nc + 1, 0);
-  for (std::size_t I = 0; I < nc; ++I) {
-    std::vector<std::pair<std::int64_t, double>> row;
+  tbb::parallel_for(std::size_t(0), nc, [&](std::size_t I) {
+    std::uint64_t used = 0;
+    for (int s = 0; s < slots; ++s) used += col[I * slots + s] >= 0;
+    Ac.row_ptr[I + 1] = used;
+  });
+  for (std::size_t I = 0; I < nc; ++I) Ac.row_ptr[I + 1] += Ac.row_ptr[I];
+  Ac.col.resize(Ac.row_ptr[nc]);
+  Ac.val.resize(Ac.row_ptr[nc]);
+  tbb::parallel_for(std::size_t(0), nc, [&](std::size_t I) {
+    std::array<std::pair<std::int64_t, double>, 27> row;
+    int used = 0;
     for (int s = 0; s < slots; ++s)
-      if (col[I * slots + s] >= 0) row.emplace_back(col[I * slots + s], val[I * slots + s]);
-    std::sort(row.begin(), row.end());
-    for (auto& [c, v] : row) {
-      Ac.col.push_back(static_cast<std::uint32_t>(c));
-      Ac.val.push_back(static_cast<T>(scale * v));
+      if (col[I * slots + s] >= 0) row[used++] = {col[I * slots + s], val[I * slots + s]};
+    std::sort(row.begin(), row.begin() + used);
+    for (int e = 0; e < used; ++e) {
+      Ac.col[Ac.row_ptr[I] + e] = static_cast<std::uint32_t>(row[e].first);
+      Ac.val[Ac.row_ptr[I] + e] = static_cast<T>(scale * row[e].second);
     }
-    Ac.row_ptr[I + 1] = Ac.val.size();
-  }
-  return Ac;
+  });
 }
 
 template <class T>
-std::vector<T> inverse_diagonal(const CsrMatrix<T>& A) {
-  auto d = A.diagonal();
-  for (std::size_t i = 0; i < d.size(); ++i) {
-    if (d[i] == T(0) || !std::isfinite(double(d[i])))
+void inverse_diagonal(const CsrView<T>& A, std::vector<T>& d) {
+  d.resize(A.rows);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, A.rows, 4096), [&](auto r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      T sum = 0;
+      for (auto k = A.row_ptr[i]; k < A.row_ptr[i + 1]; ++k)
+        if (A.col[k] == i) sum += A.val[k];
+      d[i] = T(1) / sum;
+    }
+  });
+}
+
+template <class T>
+void check_inverse_diagonal(const std::vector<T>& d) {
+  for (std::size_t i = 0; i < d.size(); ++i)  // the first bad row, the same for any thread count
+    if (!std::isfinite(double(d[i])))
       throw std::invalid_argument("multigrid: zero diagonal at row " + std::to_string(i));
-    d[i] = T(1) / d[i];
-  }
-  return d;
 }
 
 }  // namespace
 
 struct BucketMultigrid::Impl {
   virtual ~Impl() = default;
+  virtual void build(const CsrMatrix<double>& A, std::span<const double> x, int D, double width) = 0;
   virtual void apply(std::span<const double> r, std::span<double> z) const = 0;
   virtual std::vector<MultigridLevelInfo> levels() const = 0;
   virtual std::size_t bytes() const = 0;
@@ -127,38 +209,73 @@ namespace {
 
 template <class T>
 struct Hierarchy final : BucketMultigrid::Impl {
-  std::vector<Level<T>> L;
+  std::vector<Level<T>> L;  // kept with their storage between builds
   MultigridOptions o;
+  std::vector<Coord> q;  // bucket coordinates of the current level's elements
+  GalerkinScratch<T> scratch;
 
-  Hierarchy(const CsrMatrix<double>& A, std::span<const double> x, int D, double width, const MultigridOptions& opt)
-      : o(opt) {
+  explicit Hierarchy(const MultigridOptions& opt) : o(opt) {}
+
+  void build(const CsrMatrix<double>& A, std::span<const double> x, int D, double width) override {
     const std::size_t n = A.rows;
     if (x.size() != n * std::size_t(D)) throw std::invalid_argument("multigrid: coordinates do not match the matrix");
-    L.emplace_back();
-    L[0].A = A.template cast<T>();
-    std::vector<Coord> q(n, Coord{0, 0, 0});
+    // Level 0 is the caller's matrix: its structure is shared (A must outlive the hierarchy and
+    // keep its values, as it does in the pressure pipeline: assembled, set up, solved), its values
+    // converted when the hierarchy is in float.
+    if (L.empty()) L.emplace_back();
+    L[0].view = CsrView<T>{n, A.row_ptr.data(), A.col.data(), nullptr};
+    if constexpr (std::is_same_v<T, double>) {
+      L[0].view.val = A.val.data();
+    } else {
+      T* v = L[0].values0.ensure(A.nonzeros());
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, A.nonzeros(), 1 << 16), [&](auto r) {
+        for (std::size_t k = r.begin(); k != r.end(); ++k) v[k] = static_cast<T>(A.val[k]);
+      });
+      L[0].view.val = v;
+    }
+    q.resize(n);
     std::vector<double> lo(D, INFINITY);
     for (std::size_t i = 0; i < n; ++i)
       for (int a = 0; a < D; ++a) lo[a] = std::min(lo[a], x[i * D + a]);
-    for (std::size_t i = 0; i < n; ++i)
-      for (int a = 0; a < D; ++a) q[i][a] = static_cast<std::int64_t>(std::floor((x[i * D + a] - lo[a]) / width));
-    while (L.back().A.rows > o.bottom_size && L.size() < 40) {
-      auto& fine = L.back();
+    parallel_indices(n, [&](std::size_t i) {
+      q[i] = Coord{0, 0, 0};
+      for (int a = 0; a < D; ++a)
+        q[i][a] = static_cast<std::int64_t>(std::floor((x[i * D + a] - lo[a]) / width));
+    });
+    std::size_t count = 1;
+    while (L[count - 1].view.rows > o.bottom_size && count < 40) {
+      auto& fine = L[count - 1];
+      fine.ap_slots = 0;
       auto coarse = aggregate(q, D, fine.to_coarse, fine.member_offsets, fine.members);
-      if (coarse.size() == fine.A.rows) break;  // nothing left to merge
-      double scale = (o.scale_correction && L.size() >= 2) ? 0.5 : 1.0;  // eq. 18, not between 0 and 1
-      Level<T> next;
-      next.A = galerkin(fine.A, fine.to_coarse, fine.member_offsets, fine.members, coarse, D, scale);
-      L.push_back(std::move(next));
+      if (coarse.size() == fine.view.rows) break;                     // nothing left to merge
+      double scale = (o.scale_correction && count >= 2) ? 0.5 : 1.0;  // eq. 18, not between 0 and 1
+      // A P is kept where its 3^D slots are well under A's entries per row (module comment).
+      const int slots = D == 2 ? 9 : 27;
+      const bool keep_ap =
+          o.post_smoothing > 0 && slots < 0.5 * double(fine.view.nonzeros()) / double(fine.view.rows);
+      if (keep_ap) fine.ap_slots = slots;
+      if (L.size() == count) L.emplace_back();  // after the emplace, fine is L[count - 1] again
+      auto& f = L[count - 1];
+      auto& next = L[count];
+      f.inverse_diagonal.resize(f.view.rows);
+      galerkin(f.view, f.to_coarse, f.member_offsets, f.members, q, coarse.size(), D, scale,
+               keep_ap ? f.ap_col.ensure(f.view.rows * slots) : nullptr,
+               keep_ap ? f.ap_val.ensure(f.view.rows * slots) : nullptr, f.inverse_diagonal.data(), scratch,
+               next.A);
+      next.view = next.A.view();
+      ++count;
       q = coarse;
       for (auto& c : q)
         for (int a = 0; a < D; ++a) c[a] = c[a] >= 0 ? c[a] / 2 : -((-c[a] + 1) / 2);  // floor division
     }
+    L.resize(count);
+    L.back().ap_slots = 0;
+    inverse_diagonal(L.back().view, L.back().inverse_diagonal);  // the others came with their Galerkin pass
     for (auto& l : L) {
-      l.inverse_diagonal = inverse_diagonal(l.A);
-      l.r.assign(l.A.rows, T(0));
-      l.z.assign(l.A.rows, T(0));
-      l.tmp.assign(l.A.rows, T(0));
+      check_inverse_diagonal(l.inverse_diagonal);
+      l.r.assign(l.view.rows, T(0));
+      l.z.assign(l.view.rows, T(0));
+      l.tmp.assign(l.view.rows, T(0));
     }
   }
 
@@ -169,7 +286,7 @@ struct Hierarchy final : BucketMultigrid::Impl {
       parallel_indices(l.r.size(), [&](std::size_t i) { l.z[i] = w * l.inverse_diagonal[i] * l.r[i]; });
       return;
     }
-    spmv<T, T, T>(l.A, std::span<const T>(l.z), std::span<T>(l.tmp));
+    spmv<T, T, T>(l.view, std::span<const T>(l.z), std::span<T>(l.tmp));
     parallel_indices(l.r.size(), [&](std::size_t i) { l.z[i] += w * l.inverse_diagonal[i] * (l.r[i] - l.tmp[i]); });
   }
 
@@ -182,7 +299,7 @@ struct Hierarchy final : BucketMultigrid::Impl {
     }
     for (int s = 0; s < o.pre_smoothing; ++s) jacobi(l, zero && s == 0);
     if (o.pre_smoothing == 0 && zero) std::fill(l.z.begin(), l.z.end(), T(0));
-    spmv<T, T, T>(l.A, std::span<const T>(l.z), std::span<T>(l.tmp));
+    spmv<T, T, T>(l.view, std::span<const T>(l.z), std::span<T>(l.tmp));
     const auto& c = L[k + 1];
     parallel_indices(c.r.size(), [&](std::size_t I) {  // restriction P^T (r - A z)
       T s = 0;
@@ -191,8 +308,22 @@ struct Hierarchy final : BucketMultigrid::Impl {
     }, 1024);
     cycle(k + 1, true);
     if (o.cycle == MultigridOptions::Cycle::W) cycle(k + 1, false);
-    parallel_indices(l.z.size(), [&](std::size_t i) { l.z[i] += c.z[l.to_coarse[i]]; });  // P e_c
-    for (int s = 0; s < o.post_smoothing; ++s) jacobi(l, false);
+    int post = o.post_smoothing;
+    if (l.ap_slots > 0) {  // z += P e_c and the first sweep, with A (z + P e_c) = tmp + (A P) e_c
+      const std::size_t slots = l.ap_slots;
+      const T w = static_cast<T>(o.jacobi_weight);
+      parallel_indices(l.z.size(), [&](std::size_t i) {
+        T az = l.tmp[i];
+        const T* val = l.ap_val.data.get() + i * slots;
+        const std::uint32_t* col = l.ap_col.data.get() + i * slots;
+        for (std::size_t s = 0; s < slots; ++s) az += val[s] * c.z[col[s]];
+        l.z[i] += c.z[l.to_coarse[i]] + w * l.inverse_diagonal[i] * (l.r[i] - az);
+      });
+      --post;
+    } else {
+      parallel_indices(l.z.size(), [&](std::size_t i) { l.z[i] += c.z[l.to_coarse[i]]; });  // P e_c
+    }
+    for (int s = 0; s < post; ++s) jacobi(l, false);
   }
 
   void apply(std::span<const double> r, std::span<double> z) const override {
@@ -203,14 +334,16 @@ struct Hierarchy final : BucketMultigrid::Impl {
   }
   std::vector<MultigridLevelInfo> levels() const override {
     std::vector<MultigridLevelInfo> v;
-    for (auto& l : L) v.push_back({l.A.rows, l.A.nonzeros()});
+    for (auto& l : L) v.push_back({l.view.rows, l.view.nonzeros()});
     return v;
   }
   std::size_t bytes() const override {
     std::size_t b = 0;
     for (auto& l : L)
-      b += l.A.bytes() + (l.inverse_diagonal.size() + 3 * l.r.size()) * sizeof(T) +
-           (l.to_coarse.size() + l.members.size()) * 4 + l.member_offsets.size() * 8;
+      b += l.A.bytes() + l.values0.bytes() +  // level 0's structure is the caller's
+           (l.inverse_diagonal.size() + 3 * l.r.size()) * sizeof(T) +
+           (l.to_coarse.size() + l.members.size()) * 4 + l.member_offsets.size() * 8 + l.ap_col.bytes() +
+           l.ap_val.bytes();
     return b;
   }
 };
@@ -221,11 +354,17 @@ BucketMultigrid::BucketMultigrid(const CsrMatrix<double>& A, std::span<const dou
                                  double bucket_width, const MultigridOptions& options) {
   if (dimension != 2 && dimension != 3) throw std::invalid_argument("multigrid: dimension must be 2 or 3");
   if (options.single_precision)
-    impl_ = std::make_unique<Hierarchy<float>>(A, coordinates, dimension, bucket_width, options);
+    impl_ = std::make_unique<Hierarchy<float>>(options);
   else
-    impl_ = std::make_unique<Hierarchy<double>>(A, coordinates, dimension, bucket_width, options);
+    impl_ = std::make_unique<Hierarchy<double>>(options);
+  impl_->build(A, coordinates, dimension, bucket_width);
 }
 BucketMultigrid::~BucketMultigrid() = default;
+void BucketMultigrid::rebuild(const CsrMatrix<double>& A, std::span<const double> coordinates, int dimension,
+                              double bucket_width) {
+  if (dimension != 2 && dimension != 3) throw std::invalid_argument("multigrid: dimension must be 2 or 3");
+  impl_->build(A, coordinates, dimension, bucket_width);
+}
 void BucketMultigrid::apply(std::span<const double> r, std::span<double> z) const { impl_->apply(r, z); }
 std::string BucketMultigrid::name() const { return "multigrid"; }
 std::vector<MultigridLevelInfo> BucketMultigrid::levels() const { return impl_->levels(); }

@@ -35,10 +35,16 @@ struct MultigridLevelInfo {
 
 class BucketMultigrid final : public Preconditioner {
  public:
-  // coordinates: N x dimension, row-major; bucket_width: the influence radius r_e.
+  // coordinates: N x dimension, row-major; bucket_width: the influence radius r_e. The finest
+  // level reads A's row pointers and columns (and, in double, its values) in place: A must
+  // outlive the preconditioner and keep its entries while it is applied.
   BucketMultigrid(const CsrMatrix<double>& A, std::span<const double> coordinates, int dimension,
                   double bucket_width, const MultigridOptions& options = {});
   ~BucketMultigrid() override;
+  // The hierarchy for a new matrix (same options), in the storage of the last one: the pressure
+  // pipeline sets up every step, and fresh large arrays cost the kernel's page zeroing.
+  void rebuild(const CsrMatrix<double>& A, std::span<const double> coordinates, int dimension,
+               double bucket_width);
   void apply(std::span<const double> r, std::span<double> z) const override;
   std::string name() const override;
   std::vector<MultigridLevelInfo> levels() const;

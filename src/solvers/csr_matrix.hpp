@@ -11,6 +11,18 @@
 
 namespace ryushi::solvers {
 
+// A CSR matrix's arrays without ownership: the multigrid's finest level reads the pressure
+// matrix's row pointers and columns through it instead of copying them (a third of the matrix's
+// bytes; at 1.28M unknowns a 160 MB copy per step), with values of its own precision.
+template <class T>
+struct CsrView {
+  std::size_t rows = 0;
+  const std::uint64_t* row_ptr = nullptr;
+  const std::uint32_t* col = nullptr;
+  const T* val = nullptr;
+  std::size_t nonzeros() const { return rows ? row_ptr[rows] : 0; }
+};
+
 template <class T>
 struct CsrMatrix {
   std::size_t rows = 0, cols = 0;
@@ -19,6 +31,7 @@ struct CsrMatrix {
   std::vector<T> val;
 
   std::size_t nonzeros() const { return val.size(); }
+  CsrView<T> view() const { return {rows, row_ptr.data(), col.data(), val.data()}; }
   std::size_t bytes() const {
     return row_ptr.size() * sizeof(std::uint64_t) + col.size() * sizeof(std::uint32_t) + val.size() * sizeof(T);
   }

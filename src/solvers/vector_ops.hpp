@@ -18,7 +18,7 @@ inline constexpr std::size_t kReductionChunk = 4096;
 // both float: the float multigrid hierarchy then runs at float speed (8 bytes per nonzero read
 // instead of 12, no conversions), and a preconditioner needs no more than float accuracy.
 template <class T, class X, class Y>
-void spmv(const CsrMatrix<T>& A, std::span<const X> x, std::span<Y> y) {
+void spmv(const CsrView<T>& A, std::span<const X> x, std::span<Y> y) {
   using Sum = std::conditional_t<std::is_same_v<T, float> && std::is_same_v<X, float>, float, double>;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, A.rows, 1024), [&](auto r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
@@ -27,6 +27,10 @@ void spmv(const CsrMatrix<T>& A, std::span<const X> x, std::span<Y> y) {
       y[i] = static_cast<Y>(s);
     }
   });
+}
+template <class T, class X, class Y>
+void spmv(const CsrMatrix<T>& A, std::span<const X> x, std::span<Y> y) {
+  spmv<T, X, Y>(A.view(), x, y);
 }
 
 // f(i) for i in [0, n) in parallel, in blocks (one call per block, not per element).
