@@ -184,8 +184,12 @@ TEST_CASE("neighbours: a Verlet list with a skin gives the rebuilt list at every
                               w.column(components::kind), kWall);
       const auto& list = res.get(neighbours_resource);
       REQUIRE(list.size() == fresh.size());
-      CHECK(list.offsets == fresh.offsets);
-      CHECK(list.indices == fresh.indices);
+      bool same_rows = true;  // the Verlet list is strided (NeighbourList::ends): row by row
+      for (std::size_t i = 0; i < fresh.size(); ++i) {
+        auto a = list.of(i), b = fresh.of(i);
+        same_rows = same_rows && std::equal(a.begin(), a.end(), b.begin(), b.end());
+      }
+      CHECK(same_rows);
       // Move; positions wrap on the periodic axis (the minimum image keeps that a small move).
       auto& xs = w.column(components::position);
       const auto& vs = w.column(components::velocity);

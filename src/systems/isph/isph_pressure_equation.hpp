@@ -352,6 +352,7 @@ class IsphPressureEquation final : public System<D> {
     auto keeps = [&](std::size_t j) { return kind[j] != kWall || unknown_[j]; };
     out.radius = full.radius;
     out.offsets.assign(n + 1, 0);
+    out.ends.clear();  // packed
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](auto range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         std::uint32_t c = 0;

@@ -13,17 +13,29 @@ namespace ryushi {
 struct NeighbourList {
   std::vector<std::uint32_t> offsets{0};
   std::vector<std::uint32_t> indices;
+  // Empty: packed, row i is [offsets[i], offsets[i + 1]). Otherwise row i is [offsets[i],
+  // ends[i]): a Verlet list filtered into storage of its candidates' size without a packing
+  // copy, with gaps between blocks of rows (filter_neighbour_list).
+  std::vector<std::uint32_t> ends;
   double radius = 0;
   std::size_t builds = 0;           // how many times it was built (a Verlet list is reused in between)
   std::size_t candidate_bytes = 0;  // the Verlet candidates this list is filtered from, if any
 
   std::size_t size() const { return offsets.size() - 1; }
-  std::uint32_t count(std::size_t i) const { return offsets[i + 1] - offsets[i]; }
+  std::uint32_t end(std::size_t i) const { return ends.empty() ? offsets[i + 1] : ends[i]; }
+  std::uint32_t count(std::size_t i) const { return end(i) - offsets[i]; }
   std::span<const std::uint32_t> of(std::size_t i) const {
-    return {indices.data() + offsets[i], indices.data() + offsets[i + 1]};
+    return {indices.data() + offsets[i], indices.data() + end(i)};
+  }
+  // Pairs held (not the storage, which for a filtered list is the candidates' size).
+  std::size_t pairs() const {
+    if (ends.empty()) return indices.size();
+    std::size_t p = 0;
+    for (std::size_t i = 0; i < size(); ++i) p += count(i);
+    return p;
   }
   std::size_t bytes() const {
-    return (offsets.size() + indices.size()) * sizeof(std::uint32_t) + candidate_bytes;
+    return (offsets.size() + indices.size() + ends.size()) * sizeof(std::uint32_t) + candidate_bytes;
   }
 };
 

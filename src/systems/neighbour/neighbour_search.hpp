@@ -24,12 +24,12 @@ void build_neighbour_list(const Domain<D>& domain, double radius, std::span<cons
                           std::int32_t skip_kind = -1);
 
 // `out` = the pairs of `candidates` (a list built with a larger radius) within `radius`, in the
-// same order: the same list that build_neighbour_list gives for `radius`, at a fraction of its
-// cost. `scratch` is working memory (as long as the candidates' indices).
+// same order: row for row the list that build_neighbour_list gives for `radius`, at a fraction
+// of its cost. `out` has NeighbourList::ends: storage of the candidates' size, rows packed
+// within each parallel block.
 template <int D>
 void filter_neighbour_list(const Domain<D>& domain, double radius, std::span<const Vec<D>> x,
-                           const NeighbourList& candidates, NeighbourList& out,
-                           std::vector<std::uint32_t>& scratch);
+                           const NeighbourList& candidates, NeighbourList& out);
 
 // Largest |x_i - ref_i| (minimum image on periodic axes) and largest |v_i| (the Verlet list's
 // rebuild test); an empty v gives speed 0.
@@ -92,10 +92,9 @@ class NeighbourSearch final : public System<D> {
       reference_.assign(x.begin(), x.end());
       version_ = ctx.structure_version();
     }
-    filter_neighbour_list<D>(domain, radius_, x, candidates_, out, scratch_);
+    filter_neighbour_list<D>(domain, radius_, x, candidates_, out);
     out.builds = candidates_.builds;
-    out.candidate_bytes =
-        candidates_.bytes() + scratch_.size() * sizeof(std::uint32_t) + reference_.size() * sizeof(Vec<D>);
+    out.candidate_bytes = candidates_.bytes() + reference_.size() * sizeof(Vec<D>);
   }
 
   // A Verlet list lives on from its last build, and the driver reorders particles with that
@@ -131,7 +130,6 @@ class NeighbourSearch final : public System<D> {
   double skin_;
   bool moves_within_step_;
   NeighbourList candidates_;
-  std::vector<std::uint32_t> scratch_;
   std::uint64_t version_ = 0;
   std::vector<Vec<D>> reference_;
 };

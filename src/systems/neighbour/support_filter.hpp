@@ -30,16 +30,15 @@ class SupportFilter final : public System<D> {
     auto x = ctx.read(components::position);
     const auto& domain = ctx.read(domain_resource<D>);
     auto& list = ctx.write(neighbours_resource);
-    filter_neighbour_list<D>(domain, support_, x, list, narrowed_, scratch_);
+    filter_neighbour_list<D>(domain, support_, x, list, narrowed_);
     narrowed_.builds = list.builds;
-    narrowed_.candidate_bytes = list.bytes() + scratch_.size() * sizeof(std::uint32_t);  // kept for reuse
+    narrowed_.candidate_bytes = list.bytes();  // kept for reuse
     std::swap(list, narrowed_);  // the wide list's storage is reused next step
   }
 
  private:
   double support_;
   NeighbourList narrowed_;
-  std::vector<std::uint32_t> scratch_;
 };
 
 }  // namespace ryushi
