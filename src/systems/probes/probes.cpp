@@ -1,14 +1,16 @@
 #include "systems/probes/probes.hpp"
 
-#include "systems/elastic/elastic_parameters.hpp"
-#include "systems/probes/solid_force.hpp"
-#include "systems/operators/mps_reference.hpp"
-#include "systems/probes/solid_surface_force.hpp"
-
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
+
+#include "systems/elastic/elastic_parameters.hpp"
+#include "systems/operators/mps_reference.hpp"
+#include "systems/probes/solid_force.hpp"
+#include "systems/probes/solid_surface_force.hpp"
 
 namespace ryushi {
 
@@ -41,16 +43,25 @@ double water_surface(const Vec<D>& base, const World<D>& world, const Kernel<D>&
   for (std::size_t i = 0; i < world.size(); ++i) {
     Vec<D> r = x[i] - base;
     r[D - 1] = 0;
-    if (r.norm() < support) near.push_back(i);
+    if (r.squaredNorm() < support * support) near.push_back(i);
   }
+  // Sorted by height, each sample reads only the window within the support above and below it
+  // (a tall column holds thousands of candidates; every sample reading all of them made this
+  // probe 2% of an MPS step at 1.3M particles).
+  std::sort(near.begin(), near.end(),
+            [&](std::size_t a, std::size_t b) { return x[a][D - 1] < x[b][D - 1]; });
+  std::size_t first = 0, last = 0;
   const double step = 0.25 * d;
   bool in_water = false;
   double previous_z = base[D - 1], previous_f = 0;
   for (double z = base[D - 1]; z <= top; z += step) {
     Vec<D> at = base;
     at[D - 1] = z;
+    while (first < near.size() && x[near[first]][D - 1] <= z - support) ++first;
+    while (last < near.size() && x[near[last]][D - 1] < z + support) ++last;
     double fluid = 0, wall = 0;
-    for (auto i : near) {
+    for (std::size_t k = first; k < last; ++k) {
+      const std::size_t i = near[k];
       double vw = m[i] / rho0 * kernel.w((x[i] - at).norm());
       (kind[i] == kFluid ? fluid : wall) += vw;
     }
@@ -87,9 +98,12 @@ std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const Wo
     Vec<D> at = Vec<D>::Zero();
     for (std::size_t a = 0; a < probe.position.size(); ++a) at[a] = probe.position[a];
     if (probe.type == "pressure") {
+      const double support2 = kernel.support() * kernel.support();
       auto [num, den] = reduce_particles(world.size(), {0.0, 0.0}, [&](std::size_t i, auto& acc) {
         if (kind[i] != kFluid) return;
-        double w = kernel.w((x[i] - at).norm()) * m[i] / rho[i];
+        const double r2 = (x[i] - at).squaredNorm();
+        if (r2 >= support2) return;
+        double w = kernel.w(std::sqrt(r2)) * m[i] / rho[i];
         acc.first += p[i] * w;
         acc.second += w;
       }, false);
