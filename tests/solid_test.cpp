@@ -136,6 +136,39 @@ TEST_CASE(
   CHECK(fluid.size() == 50 * 30 - in_disc - 25);
 }
 
+// A body standing on the floor: the foot of its wetted face is a corner of the box, but the
+// bottom face lies on the wall and sees no water, so that corner's normal is the wetted face's
+// (the bisector told ISPH the water there is pushed into the floor: 10x hydrostatic at a
+// piston's foot in the wave flume). A corner in the open keeps the bisector.
+TEST_CASE("solid: a body's corner on a wall takes the normal of its wetted face") {
+  auto dir = test::unique_scratch("solid_foot");
+  test::write_text(
+      dir / "s.toml",
+      "[scene]\ndimension = 2\n[domain]\nmin = [-0.1, -0.1]\nmax = [1.1, 1.1]\n[particles]\nspacing = 0.02\n"
+      "[method]\nname = \"isph\"\n[time]\nend = 0.1\n[[wall]]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n"
+      "[[fluid]]\nmin = [0.0, 0.0]\nmax = [1.0, 0.6]\n"
+      "[[solid]]\nshape = \"box\"\nmin = [0.1, 0.0]\nmax = [0.2, 0.1]\nlayers = 1\n");
+  auto r = test::run_command(bin() + " check " + (dir / "s.toml").string() + " --write-initial " +
+                             (dir / "init").string());
+  REQUIRE_MESSAGE(r.code == 0, r.output);
+  const auto frame = dir / "init" / "frames" / "frame_00000.h5";
+  auto x = test::read_dataset(frame, "position").values, n = test::read_dataset(frame, "wall_normal").values,
+       body = test::read_dataset(frame, "body").values;
+  auto normal_at = [&](double px, double py) {
+    for (std::size_t i = 0; i < body.size(); ++i)
+      if (body[i] >= 0 && std::hypot(x[3 * i] - px, x[3 * i + 1] - py) < 1e-9)
+        return Vec<2>(n[3 * i], n[3 * i + 1]);
+    FAIL("no body particle at (", px, ", ", py, ")");
+    return Vec<2>(0, 0);
+  };
+  const double h = std::sqrt(0.5);
+  CHECK((normal_at(0.19, 0.01) - Vec<2>(-1, 0)).norm() < 1e-12);  // feet: the side faces'
+  CHECK((normal_at(0.11, 0.01) - Vec<2>(1, 0)).norm() < 1e-12);
+  CHECK((normal_at(0.19, 0.09) - Vec<2>(-h, -h)).norm() < 1e-12);  // top corners: bisectors
+  CHECK((normal_at(0.11, 0.09) - Vec<2>(h, -h)).norm() < 1e-12);
+  CHECK((normal_at(0.15, 0.01) - Vec<2>(0, 1)).norm() < 1e-12);  // the bottom face keeps its own
+}
+
 TEST_CASE("solid: a sliding plate drives Couette flow that follows the start-up series (WCSPH)") {
   auto dir = test::unique_scratch("couette");
   auto r = test::run_command(bin() + " run " + test::scene_path("couette_2d.toml") + " --quiet --out " +
