@@ -300,13 +300,26 @@ class Runner {
 
  private:
   void advance() {
-    // Also after the first step: the scene's blocks come in lattice order, walls after the fluid,
-    // so a wall and the fluid beside it sit a whole block apart in index until the first reorder
-    // (which keeps WCSPH's each-pair-once pass from running in parallel blocks).
-    if (scene_.reorder_interval > 0 && step_ > 0 && (step_ == 1 || step_ % scene_.reorder_interval == 0)) {
+    // Also before the first step: the scene's blocks come in lattice order, walls after the
+    // fluid, so a wall and the fluid beside it sit a whole block apart in index until the first
+    // reorder (which keeps WCSPH's each-pair-once pass from running in parallel blocks). That
+    // one sorts by a grid of its own (cells of the kernel's support, or two spacings where the
+    // method sizes its kernel later), since no neighbour search has run yet. It used to follow
+    // the first step, which then ran on the unsorted lattice and rebuilt the neighbour list a
+    // second time (an MPS run at 1.36M particles: 1.0 s).
+    if (scene_.reorder_interval > 0 && step_ % scene_.reorder_interval == 0) {
       Profiler::Scope t(profiler_, slot_reorder_);
-      std::span<const std::uint32_t> order = res_.get(cell_grid_resource<D>).sorted();
-      if (!restored_order_.empty()) order = restored_order_;  // the first step after a resume
+      CellGrid<D> start_grid;
+      std::span<const std::uint32_t> order;
+      if (!restored_order_.empty()) {
+        order = restored_order_;  // the first step after a resume
+      } else if (step_ == 0) {
+        start_grid.build(context_.domain, std::max(context_.kernel.support(), 2 * context_.spacing),
+                         world_.column(components::position));
+        order = start_grid.sorted();
+      } else {
+        order = res_.get(cell_grid_resource<D>).sorted();
+      }
       if (order.size() == world_.size()) {
         CommandBuffer<D> cb;
         cb.permute({order.begin(), order.end()});
