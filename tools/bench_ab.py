@@ -3,7 +3,12 @@ drift of a shared machine falls on both: prints each run's wall time, then per s
 ms per step of each binary and their ratio, and the whole step's ratio.
 
     /usr/bin/python3 tools/bench_ab.py OLD_BINARY NEW_BINARY SCENE [--repeats 3] [--threads 2]
-        [--set key=value ...]
+        [--set key=value ...] [--old-scene OLD_SCENE]
+
+--old-scene gives the old binary its own tree's scene (an old binary cannot parse keys added
+since; the new scene's defaults may differ too: say so when you report the ratio). The last
+lines give the whole step (wall time per step, start-up included) and the sum of the systems
+without output (frames written are not the step's physics; a short run's first frame weighs).
 
 e.g. the ISPH dam break at a/d = 100 for 0.05 s:
     /usr/bin/python3 tools/bench_ab.py build-prev/build/ryushi build/ryushi \\
@@ -38,13 +43,15 @@ def main():
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--set", action="append", default=[])
+    ap.add_argument("--old-scene", default=None)
     args = ap.parse_args()
     results = {"old": [], "new": []}
     with tempfile.TemporaryDirectory() as tmp:
         for r in range(args.repeats):
             for which in ("old", "new"):
                 binary = getattr(args, which)
-                res = run(binary, args.scene, args.set, args.threads, os.path.join(tmp, f"{which}{r}"))
+                scene = args.old_scene if which == "old" and args.old_scene else args.scene
+                res = run(binary, scene, args.set, args.threads, os.path.join(tmp, f"{which}{r}"))
                 results[which].append(res)
                 print(f"repeat {r + 1} {which}: {res[0]:.2f} s, {res[1]} steps")
     steps = {results[w][0][1] for w in results}
@@ -63,6 +70,9 @@ def main():
     w = statistics.median(1e3 * r[0] / r[1] for r in results["new"])
     particles = results["new"][0][2]
     print(f"{'whole step':32s} {o:9.3f} {w:9.3f} {o / w:8.2f}")
+    so = statistics.median(sum(v for k, v in r[3].items() if k != "output") for r in results["old"])
+    sw = statistics.median(sum(v for k, v in r[3].items() if k != "output") for r in results["new"])
+    print(f"{'systems without output':32s} {so:9.3f} {sw:9.3f} {so / sw:8.2f}")
     print(f"particle-steps/s: old {particles / o * 1e3:.3g}, new {particles / w * 1e3:.3g} ({particles} particles)")
 
 
