@@ -92,7 +92,6 @@ std::vector<Coord> aggregate(const std::vector<Coord>& q, int D, std::vector<std
 
 // A_c = scale * P^T A P, row by row: each coarse row gathers its members' rows into the 3^D
 // slots given by the bucket offset of the column's coarse element (Algorithm 1, no atomics).
-template <class T>
 struct GalerkinScratch {
   Buffer<double> val;
   Buffer<std::int64_t> col;
@@ -105,7 +104,7 @@ template <class T>
 void galerkin(const CsrView<T>& A, const std::vector<std::uint32_t>& to_coarse,
               const std::vector<std::uint64_t>& offsets, const std::vector<std::uint32_t>& members,
               const std::vector<Coord>& q, std::size_t nc, int D, double scale, std::uint32_t* ap_col,
-              T* ap_val, T* inverse_diagonal, GalerkinScratch<T>& scratch, CsrMatrix<T>& Ac) {
+              T* ap_val, T* inverse_diagonal, GalerkinScratch& scratch, CsrMatrix<T>& Ac) {
   const int slots = D == 2 ? 9 : 27;
   double* val = scratch.val.ensure(nc * slots);
   std::int64_t* col = scratch.col.ensure(nc * slots);
@@ -212,7 +211,7 @@ struct Hierarchy final : BucketMultigrid::Impl {
   std::vector<Level<T>> L;  // kept with their storage between builds
   MultigridOptions o;
   std::vector<Coord> q;  // bucket coordinates of the current level's elements
-  GalerkinScratch<T> scratch;
+  GalerkinScratch scratch;
 
   explicit Hierarchy(const MultigridOptions& opt) : o(opt) {}
 

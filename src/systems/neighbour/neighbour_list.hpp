@@ -27,13 +27,6 @@ struct NeighbourList {
   std::span<const std::uint32_t> of(std::size_t i) const {
     return {indices.data() + offsets[i], indices.data() + end(i)};
   }
-  // Pairs held (not the storage, which for a filtered list is the candidates' size).
-  std::size_t pairs() const {
-    if (ends.empty()) return indices.size();
-    std::size_t p = 0;
-    for (std::size_t i = 0; i < size(); ++i) p += count(i);
-    return p;
-  }
   std::size_t bytes() const {
     return (offsets.size() + indices.size() + ends.size()) * sizeof(std::uint32_t) + candidate_bytes;
   }
