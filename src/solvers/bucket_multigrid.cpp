@@ -108,48 +108,52 @@ void galerkin(const CsrView<T>& A, const std::vector<std::uint32_t>& to_coarse,
   const int slots = D == 2 ? 9 : 27;
   double* val = scratch.val.ensure(nc * slots);
   std::int64_t* col = scratch.col.ensure(nc * slots);
-  tbb::parallel_for(std::size_t(0), nc,
-                    [&](std::size_t I) {
-                      std::array<double, 27> coarse_val{};
-                      std::array<std::int64_t, 27> coarse_col;
-                      coarse_col.fill(-1);
-                      for (auto m = offsets[I]; m < offsets[I + 1]; ++m) {
-                        std::uint32_t i = members[m];
-                        const Coord& qi = q[i];
-                        std::array<double, 27> row_val{};
-                        std::array<std::uint32_t, 27> row_col;
-                        row_col.fill(static_cast<std::uint32_t>(I));
-                        std::uint32_t used = 0;  // bit s: slot s holds an entry (possibly summing to zero)
-                        T diagonal = 0;
-                        for (auto k = A.row_ptr[i]; k < A.row_ptr[i + 1]; ++k) {
-                          const std::uint32_t j = A.col[k];
-                          const Coord& qj = q[j];
-                          int slot = 0, stride = 1;
-                          for (int a = 0; a < D; ++a, stride *= 3) {
-                            std::int64_t d = qj[a] - qi[a] + 1;
-                            if (d < 0 || d > 2) throw std::invalid_argument("multigrid: a matrix entry spans more than one bucket; the bucket width must be at least the influence radius");
-                            slot += int(d) * stride;
-                          }
-                          row_val[slot] += A.val[k];
-                          row_col[slot] = to_coarse[j];
-                          used |= 1u << slot;
-                          if (j == i) diagonal += A.val[k];
-                        }
-                        if (inverse_diagonal) inverse_diagonal[i] = T(1) / diagonal;
-                        for (int s = 0; s < slots; ++s)
-                          if (used >> s & 1u) {
-                            coarse_val[s] += row_val[s];
-                            coarse_col[s] = row_col[s];
-                          }
-                        if (ap_col)
-                          for (int s = 0; s < slots; ++s) {
-                            ap_col[std::size_t(i) * slots + s] = row_col[s];
-                            ap_val[std::size_t(i) * slots + s] = static_cast<T>(row_val[s]);
-                          }
-                      }
-                      std::copy_n(coarse_val.begin(), slots, val + I * slots);
-                      std::copy_n(coarse_col.begin(), slots, col + I * slots);
-                    });
+  // One coarse row: its members' rows gathered into the slots (and A P's rows, the diagonal).
+  auto gather = [&](std::size_t I) {
+    std::array<double, 27> coarse_val{};
+    std::array<std::int64_t, 27> coarse_col;
+    coarse_col.fill(-1);
+    for (auto m = offsets[I]; m < offsets[I + 1]; ++m) {
+      std::uint32_t i = members[m];
+      const Coord& qi = q[i];
+      std::array<double, 27> row_val{};
+      std::array<std::uint32_t, 27> row_col;
+      row_col.fill(static_cast<std::uint32_t>(I));
+      std::uint32_t used = 0;  // bit s: slot s holds an entry (possibly summing to zero)
+      T diagonal = 0;
+      for (auto k = A.row_ptr[i]; k < A.row_ptr[i + 1]; ++k) {
+        const std::uint32_t j = A.col[k];
+        const Coord& qj = q[j];
+        int slot = 0, stride = 1;
+        for (int a = 0; a < D; ++a, stride *= 3) {
+          std::int64_t d = qj[a] - qi[a] + 1;
+          if (d < 0 || d > 2)
+            throw std::invalid_argument(
+                "multigrid: a matrix entry spans more than one bucket; the bucket width must be at least the "
+                "influence radius");
+          slot += int(d) * stride;
+        }
+        row_val[slot] += A.val[k];
+        row_col[slot] = to_coarse[j];
+        used |= 1u << slot;
+        if (j == i) diagonal += A.val[k];
+      }
+      if (inverse_diagonal) inverse_diagonal[i] = T(1) / diagonal;
+      for (int s = 0; s < slots; ++s)
+        if (used >> s & 1u) {
+          coarse_val[s] += row_val[s];
+          coarse_col[s] = row_col[s];
+        }
+      if (ap_col)
+        for (int s = 0; s < slots; ++s) {
+          ap_col[std::size_t(i) * slots + s] = row_col[s];
+          ap_val[std::size_t(i) * slots + s] = static_cast<T>(row_val[s]);
+        }
+    }
+    std::copy_n(coarse_val.begin(), slots, val + I * slots);
+    std::copy_n(coarse_col.begin(), slots, col + I * slots);
+  };
+  tbb::parallel_for(std::size_t(0), nc, gather);
   // Compaction in parallel: count the used slots per row, offsets, then each row sorted by column.
   Ac.rows = Ac.cols = nc;
   Ac.row_ptr.assign(nc + 1, 0);

@@ -60,17 +60,6 @@ struct CsrMatrix {
         if (col[k] == r) d[r] += val[k];
     return d;
   }
-
-  template <class U>
-  CsrMatrix<U> cast() const {
-    CsrMatrix<U> out;
-    out.rows = rows;
-    out.cols = cols;
-    out.row_ptr = row_ptr;
-    out.col = col;
-    out.val.assign(val.begin(), val.end());
-    return out;
-  }
 };
 
 // Builds a CSR matrix from (row, column, value) triplets; duplicates are summed and columns

@@ -34,31 +34,30 @@ class PreconditionerSetup final : public System<D> {
   void run(SystemContext<D>& ctx) override {
     const auto& sys = ctx.read(pressure_system_resource);
     auto& out = ctx.write(preconditioner_resource);
-    // The last step's hierarchy is rebuilt in its own storage (BucketMultigrid::rebuild).
-    std::unique_ptr<solvers::Preconditioner> previous = std::move(out.M);
     out.bytes = 0;
     out.levels = 0;
-    if (sys.A.rows == 0) return;
+    if (sys.A.rows == 0) {
+      out.M.reset();
+      return;
+    }
     if (spec_.preconditioner == "jacobi") {
-      previous.reset();
       out.M = std::make_unique<solvers::JacobiPreconditioner>(sys.A);
       out.bytes = sys.A.rows * sizeof(double);
       out.levels = 1;
-    } else {
-      std::unique_ptr<solvers::BucketMultigrid> mg;
-      if (auto* kept = dynamic_cast<solvers::BucketMultigrid*>(previous.get())) {
-        mg.reset(kept);
-        previous.release();
-        mg->rebuild(sys.A, sys.coordinates, sys.dimension, sys.bucket_width);
-      } else {
-        previous.reset();
-        mg = std::make_unique<solvers::BucketMultigrid>(sys.A, sys.coordinates, sys.dimension,
-                                                        sys.bucket_width, multigrid_options(spec_));
-      }
-      out.bytes = mg->bytes();
-      out.levels = static_cast<int>(mg->levels().size());
-      out.M = std::move(mg);
+      return;
     }
+    // The last step's hierarchy is rebuilt in its own storage (BucketMultigrid::rebuild).
+    auto* mg = dynamic_cast<solvers::BucketMultigrid*>(out.M.get());
+    if (mg) {
+      mg->rebuild(sys.A, sys.coordinates, sys.dimension, sys.bucket_width);
+    } else {
+      auto fresh = std::make_unique<solvers::BucketMultigrid>(sys.A, sys.coordinates, sys.dimension,
+                                                              sys.bucket_width, multigrid_options(spec_));
+      mg = fresh.get();
+      out.M = std::move(fresh);
+    }
+    out.bytes = mg->bytes();
+    out.levels = static_cast<int>(mg->levels().size());
   }
 
  private:
