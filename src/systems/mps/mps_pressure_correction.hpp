@@ -6,9 +6,11 @@
 // wall particles carry pressure; dummies are left out. With clamp_negative_pressure, p < 0 is
 // read as 0. The gradient is written to `pressure_gradient` (an output field).
 #include <algorithm>
+#include <stdexcept>
 
 #include "ecs/system.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
+#include "systems/mps/mps_pair_weights.hpp"
 #include "systems/mps/mps_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 
@@ -21,12 +23,17 @@ class MpsPressureCorrection final : public System<D> {
   std::string name() const override { return "mps_pressure_correction"; }
   Access access() const override {
     return Access{}
-        .read(components::pressure, components::kind, neighbours_resource, resources::dt, domain_resource<D>)
+        .read(components::pressure, components::kind, neighbours_resource, mps_pair_weights_resource, resources::dt,
+              domain_resource<D>)
         .write(components::position, components::velocity, components::pressure_gradient);
   }
   void run(SystemContext<D>& ctx) override {
     const double dt = ctx.read(resources::dt);
     const auto& nl = ctx.read(neighbours_resource);
+    const auto& weights = ctx.read(mps_pair_weights_resource);
+    if (weights.slots != nl.indices.size())
+      throw std::logic_error("mps_pressure_correction: the pair weights do not belong to this neighbour list");
+    const double* weight = weights.w.get();
     const auto& domain = ctx.read(domain_resource<D>);
     auto p = ctx.read(components::pressure);
     auto kind = ctx.read(components::kind);
@@ -39,11 +46,11 @@ class MpsPressureCorrection final : public System<D> {
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       double low = pressure(i);
       Vec<D> weighted = Vec<D>::Zero(), directions = Vec<D>::Zero();
-      for (auto j : nl.of(i)) {
-        if (kind[j] == kDummy) continue;
+      for (auto k = nl.offsets[i], end = nl.end(i); k != end; ++k) {
+        const auto j = nl.indices[k];
+        const double w = weight[k];
+        if (kind[j] == kDummy || w <= 0) continue;
         Vec<D> r = domain.offset(x[i], x[j]);
-        double w = p_.weight.w(r.norm());
-        if (w <= 0) continue;
         Vec<D> e = w / r.squaredNorm() * r;
         low = std::min(low, pressure(j));
         weighted += pressure(j) * e;

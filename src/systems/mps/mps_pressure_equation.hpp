@@ -16,6 +16,7 @@
 #include <stdexcept>
 
 #include "ecs/system.hpp"
+#include "systems/mps/mps_pair_weights.hpp"
 #include "systems/mps/mps_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/pressure/pressure_gauge.hpp"
@@ -31,7 +32,7 @@ class MpsPressureEquation final : public System<D> {
   Access access() const override {
     return Access{}
         .read(components::position, components::number_density, components::pressure_role, components::id,
-              components::kind, neighbours_resource, resources::dt_chosen, domain_resource<D>)
+              components::kind, neighbours_resource, mps_pair_weights_resource, resources::dt_chosen)
         .write(pressure_system_resource);
   }
   void initialise(World<D>&, Resources& res) override { res.ensure(pressure_system_resource); }
@@ -42,7 +43,10 @@ class MpsPressureEquation final : public System<D> {
     // applies (dt/dt_chosen)^2 of the correction: a weaker relaxation for that one step.
     const double dt = ctx.read(resources::dt_chosen);
     const auto& nl = ctx.read(neighbours_resource);
-    const auto& domain = ctx.read(domain_resource<D>);
+    const auto& weights = ctx.read(mps_pair_weights_resource);
+    if (weights.slots != nl.indices.size())
+      throw std::logic_error("ppe_assembly: the pair weights do not belong to this neighbour list");
+    const double* weight = weights.w.get();
     auto x = ctx.read(components::position);
     auto n = ctx.read(components::number_density);
     auto role = ctx.read(components::pressure_role);
@@ -50,26 +54,30 @@ class MpsPressureEquation final : public System<D> {
     const double c = p_.laplacian_coefficient();
     const double source = p_.relaxation * p_.rho0 / (dt * dt * p_.n0);
 
-    row_of_.assign(x.size(), kNoRow);
+    // Each particle's row, or what it is without one: the passes gather this one array per
+    // neighbour instead of its role and its row (the gather was a third of the assembly).
+    row_of_.resize(x.size());
     sys.particle_of_row.clear();
     for (std::size_t i = 0; i < x.size(); ++i)
       if (role[i] == kPressureUnknown) {
         row_of_[i] = static_cast<std::uint32_t>(sys.particle_of_row.size());
         sys.particle_of_row.push_back(static_cast<std::uint32_t>(i));
+      } else {
+        row_of_[i] = role[i] == kPressureSurface ? kSurface : kNoPressure;
       }
     const std::size_t rows = sys.particle_of_row.size();
-    // Pass 1: entries per row (the diagonal plus unknown neighbours inside r_e). Both passes
-    // test |r|^2 < r_e^2, so that they agree on every pair without a square root or a division
-    // here (computing the weight in both passes made this pass as dear as the second).
+    // Pass 1: entries per row (the diagonal plus the unknown neighbours with a positive weight,
+    // i.e. inside r_e). Both passes read the number density's weights, so they agree on every
+    // pair.
     auto& A = sys.A;
     A.rows = A.cols = rows;
     A.row_ptr.assign(rows + 1, 0);
-    const double re2 = p_.weight.support() * p_.weight.support();
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 512), [&](auto range) {
       for (std::size_t r = range.begin(); r != range.end(); ++r) {
         const std::size_t i = sys.particle_of_row[r];
         std::uint64_t count = 1;
-        for (auto j : nl.of(i)) count += row_of_[j] != kNoRow && domain.offset(x[i], x[j]).squaredNorm() < re2;
+        for (auto k = nl.offsets[i], end = nl.end(i); k != end; ++k)
+          count += row_of_[nl.indices[k]] < kSurface && weight[k] > 0;
         A.row_ptr[r + 1] = count;
       }
     });
@@ -78,34 +86,39 @@ class MpsPressureEquation final : public System<D> {
     A.val.resize(A.row_ptr[rows]);
     sys.b.resize(rows);
     sys.coordinates.resize(rows * D);
-    // Pass 2: values, the diagonal first in each row's slot range, then sorted by column.
+    // Pass 2: values, written in place. Rows follow the particle order and each list is
+    // ascending, so the columns come sorted and the diagonal goes before the first column above
+    // the row's own; a row that is not sorted (a list built before particles were reordered) is
+    // sorted afterwards.
     std::atomic<std::size_t> bad_row_found{kNoRow};
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 512), [&](auto range) {
-      std::vector<std::pair<std::uint32_t, double>> entries;
+      std::vector<std::pair<std::uint32_t, double>> unsorted_row;
       std::size_t bad_row = kNoRow;
       for (std::size_t r = range.begin(); r != range.end(); ++r) {
         const std::size_t i = sys.particle_of_row[r];
-        entries.clear();
+        const auto row = static_cast<std::uint32_t>(r);
         double diagonal = 0;
-        for (auto j : nl.of(i)) {
-          if (role[j] == kPressureNone) continue;
-          const double r2 = domain.offset(x[i], x[j]).squaredNorm();
-          if (!(r2 < re2)) continue;
-          const double w = p_.weight.w(std::sqrt(r2));
+        auto slot = A.row_ptr[r];
+        auto diagonal_slot = A.row_ptr[r + 1];  // none yet
+        std::uint32_t previous = 0;
+        bool sorted = true;
+        for (auto k = nl.offsets[i], end = nl.end(i); k != end; ++k) {
+          const double w = weight[k];
+          const std::uint32_t col = row_of_[nl.indices[k]];
+          if (col == kNoPressure || !(w > 0)) continue;
           diagonal += c * w;
-          if (row_of_[j] != kNoRow) entries.emplace_back(row_of_[j], -c * w);
+          if (col == kSurface) continue;
+          if (col > row && diagonal_slot == A.row_ptr[r + 1]) diagonal_slot = slot++;
+          sorted &= col >= previous;
+          previous = col;
+          A.col[slot] = col;
+          A.val[slot++] = -c * w;
         }
+        if (diagonal_slot == A.row_ptr[r + 1]) diagonal_slot = slot;
+        A.col[diagonal_slot] = row;
+        A.val[diagonal_slot] = diagonal;
+        if (!sorted) sort_row(A, r, unsorted_row);
         if (!(diagonal > 0) || !std::isfinite(diagonal)) bad_row = std::min<std::size_t>(bad_row, r);
-        // Rows follow the particle order and each list is ascending, so the entries are sorted
-        // already: the diagonal goes in its place.
-        const std::pair<std::uint32_t, double> diagonal_entry{static_cast<std::uint32_t>(r), diagonal};
-        entries.insert(std::upper_bound(entries.begin(), entries.end(), diagonal_entry), diagonal_entry);
-        if (!std::is_sorted(entries.begin(), entries.end())) std::sort(entries.begin(), entries.end());
-        auto k = A.row_ptr[r];
-        for (auto& [col, val] : entries) {
-          A.col[k] = col;
-          A.val[k++] = val;
-        }
         sys.b[r] = source * (n[i] - p_.n0);
         for (int a = 0; a < D; ++a) sys.coordinates[r * D + a] = x[i][a];
       }
@@ -137,9 +150,22 @@ class MpsPressureEquation final : public System<D> {
     throw std::runtime_error(m.str());
   }
 
-  static constexpr std::uint32_t kNoRow = UINT32_MAX;
+  static void sort_row(solvers::CsrMatrix<double>& A, std::size_t r, std::vector<std::pair<std::uint32_t, double>>& scratch) {
+    scratch.clear();
+    for (auto k = A.row_ptr[r]; k != A.row_ptr[r + 1]; ++k) scratch.emplace_back(A.col[k], A.val[k]);
+    std::sort(scratch.begin(), scratch.end());
+    auto k = A.row_ptr[r];
+    for (auto& [col, val] : scratch) {
+      A.col[k] = col;
+      A.val[k++] = val;
+    }
+  }
+
+  static constexpr std::uint32_t kNoRow = UINT32_MAX;  // bad_row_found's "none"
+  static constexpr std::uint32_t kNoPressure = UINT32_MAX;   // row_of_: a dummy
+  static constexpr std::uint32_t kSurface = UINT32_MAX - 1;  // row_of_: p = 0, the diagonal only
   MpsParameters<D> p_;
-  std::vector<std::uint32_t> row_of_;  // kept between steps to avoid reallocation
+  std::vector<std::uint32_t> row_of_;  // a row, kSurface or kNoPressure; kept between steps
 };
 
 }  // namespace ryushi

@@ -1,0 +1,34 @@
+#pragma once
+// The MPS weight w(|r_ij|) of every pair in the step's neighbour list at x*, stored in the list's
+// own slots: row i's weights at [offsets[i], end(i)), beside its indices. The number density
+// computes them; the pressure rows and the pressure gradient, at the same positions, read them
+// instead of a square root and a division per pair each (at 1.28M particles those were a third
+// of the two systems' time). The values are the ones those systems computed before, bit for bit.
+#include <cstddef>
+#include <memory>
+
+#include "ecs/resources.hpp"
+
+namespace ryushi {
+
+struct MpsPairWeights {
+  // Not zero-filled: the slots in the gaps between a filtered list's blocks are never touched,
+  // so their pages never become resident.
+  std::unique_ptr<double[]> w;
+  std::size_t capacity = 0;
+  std::size_t slots = 0;  // the slot count of the list they were computed for (readers check it)
+
+  double* ensure(std::size_t n) {
+    if (n > capacity) {
+      w = std::make_unique_for_overwrite<double[]>(n);
+      capacity = n;
+    }
+    slots = n;
+    return w.get();
+  }
+  std::size_t bytes() const { return capacity * sizeof(double); }
+};
+
+inline constexpr Resource<MpsPairWeights> mps_pair_weights_resource{"mps_pair_weights"};
+
+}  // namespace ryushi
