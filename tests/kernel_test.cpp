@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <vector>
 
 #include "systems/kernels/kernel.hpp"
 
@@ -121,4 +123,29 @@ TEST_CASE("kernels: W(0) and W at the joints match the published formulas (2D an
     CAPTURE(p.r);
     CHECK(std::abs(w / p.expected - 1) < 1e-12);
   }
+}
+
+TEST_CASE("kernels: the MPS weights of an array of squared distances are w's values, bit for bit") {
+  // The MPS systems compute their pair weights with mps_weights (vectorised) and keep them for
+  // the pressure rows and the pressure gradient: those must see exactly what w gives, inside r_e,
+  // at it and beyond it, so that a run is the same whichever path computed a weight.
+  const double re = 0.0031;
+  const Kernel<2> k(KernelType::Mps, re);
+  std::vector<double> r;
+  for (int i = 1; i <= 400; ++i) r.push_back(re * i / 300.0);  // to 1.33 r_e
+  r.push_back(re);
+  r.push_back(std::nextafter(re, 0.0));
+  std::vector<double> squared(r.size()), weights(r.size());
+  for (std::size_t i = 0; i < r.size(); ++i) squared[i] = r[i] * r[i];
+  k.mps_weights(squared.data(), weights.data(), squared.size());
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    CAPTURE(r[i]);
+    CHECK(weights[i] == k.w(std::sqrt(squared[i])));
+    if (r[i] < 0.99 * re) CHECK(weights[i] > 0);
+    if (r[i] > 1.001 * re) CHECK(weights[i] == 0);  // at r_e itself sqrt(r^2) may round below it
+  }
+  k.mps_weights(squared.data(), squared.data(), squared.size());  // in place, as the systems do
+  CHECK(squared == weights);
+  CHECK_THROWS_AS(Kernel<2>(KernelType::CubicSpline, re).mps_weights(squared.data(), weights.data(), 1),
+                  std::logic_error);
 }
