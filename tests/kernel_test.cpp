@@ -1,13 +1,13 @@
 // Kernels: normalisation (radial Gauss-Legendre quadrature per piece, to 1e-6), gradient
 // against a central finite difference, compact support, continuity at the piece joints.
+#include "systems/kernels/kernel.hpp"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
-
-#include "systems/kernels/kernel.hpp"
 
 using namespace ryushi;
 

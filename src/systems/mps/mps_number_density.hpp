@@ -45,7 +45,8 @@ class MpsNumberDensity final : public System<D> {
         // the compiler vectorises), then their sum in the pairs' order.
         const auto first = nl.offsets[i], count = nl.count(i);
         double* w = weight + first;
-        for (std::uint32_t k = 0; k < count; ++k) w[k] = domain.offset(x[i], x[nl.indices[first + k]]).squaredNorm();
+        for (std::uint32_t k = 0; k < count; ++k)
+          w[k] = domain.offset(x[i], x[nl.indices[first + k]]).squaredNorm();
         p_.weight.mps_weights(w, w, count);
         double sum = 0;
         for (std::uint32_t k = 0; k < count; ++k) sum += w[k];

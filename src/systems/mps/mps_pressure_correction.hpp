@@ -23,8 +23,8 @@ class MpsPressureCorrection final : public System<D> {
   std::string name() const override { return "mps_pressure_correction"; }
   Access access() const override {
     return Access{}
-        .read(components::pressure, components::kind, neighbours_resource, mps_pair_weights_resource, resources::dt,
-              domain_resource<D>)
+        .read(components::pressure, components::kind, neighbours_resource, mps_pair_weights_resource,
+              resources::dt, domain_resource<D>)
         .write(components::position, components::velocity, components::pressure_gradient);
   }
   void run(SystemContext<D>& ctx) override {
@@ -32,7 +32,8 @@ class MpsPressureCorrection final : public System<D> {
     const auto& nl = ctx.read(neighbours_resource);
     const auto& weights = ctx.read(mps_pair_weights_resource);
     if (weights.slots != nl.indices.size())
-      throw std::logic_error("mps_pressure_correction: the pair weights do not belong to this neighbour list");
+      throw std::logic_error(
+          "mps_pressure_correction: the pair weights do not belong to this neighbour list");
     const double* weight = weights.w.get();
     const auto& domain = ctx.read(domain_resource<D>);
     auto p = ctx.read(components::pressure);

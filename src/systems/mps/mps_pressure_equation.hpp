@@ -150,7 +150,8 @@ class MpsPressureEquation final : public System<D> {
     throw std::runtime_error(m.str());
   }
 
-  static void sort_row(solvers::CsrMatrix<double>& A, std::size_t r, std::vector<std::pair<std::uint32_t, double>>& scratch) {
+  static void sort_row(solvers::CsrMatrix<double>& A, std::size_t r,
+                       std::vector<std::pair<std::uint32_t, double>>& scratch) {
     scratch.clear();
     for (auto k = A.row_ptr[r]; k != A.row_ptr[r + 1]; ++k) scratch.emplace_back(A.col[k], A.val[k]);
     std::sort(scratch.begin(), scratch.end());
@@ -161,7 +162,7 @@ class MpsPressureEquation final : public System<D> {
     }
   }
 
-  static constexpr std::uint32_t kNoRow = UINT32_MAX;  // bad_row_found's "none"
+  static constexpr std::uint32_t kNoRow = UINT32_MAX;        // bad_row_found's "none"
   static constexpr std::uint32_t kNoPressure = UINT32_MAX;   // row_of_: a dummy
   static constexpr std::uint32_t kSurface = UINT32_MAX - 1;  // row_of_: p = 0, the diagonal only
   MpsParameters<D> p_;
