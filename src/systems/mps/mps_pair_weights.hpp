@@ -26,7 +26,6 @@ struct MpsPairWeights {
     slots = n;
     return w.get();
   }
-  std::size_t bytes() const { return capacity * sizeof(double); }
 };
 
 inline constexpr Resource<MpsPairWeights> mps_pair_weights_resource{"mps_pair_weights"};
