@@ -39,22 +39,13 @@ std::string scene_3d(const std::string& body, const std::string& method = "isph"
          method + "\"\n[time]\nend = 0.1\n" + body;
 }
 
-// Runs `check --write-initial` on the scene text in dir; returns the frame.
-std::filesystem::path initial_frame(const std::filesystem::path& dir, const std::string& text) {
-  test::write_text(dir / "s.toml", text);
-  auto r = test::run_command(bin() + " check " + (dir / "s.toml").string() + " --write-initial " +
-                             (dir / "init").string());
-  REQUIRE_MESSAGE(r.code == 0, r.output);
-  return dir / "init" / "frames" / "frame_00000.h5";
-}
-
 }  // namespace
 
 TEST_CASE("mesh: an STL cube and an STL sphere fill with volume / d^3 particles") {
   auto dir = fresh_dir("mesh_fill");
   make_stl("cube 0.2 " + (dir / "cube.stl").string());                               // ASCII
   make_stl("sphere 0.1 4 " + (dir / "sphere.stl").string() + " --binary --inward");  // binary, wound inward
-  auto frame = initial_frame(
+  auto frame = test::initial_frame(
       dir, scene_3d("[[mesh]]\nname = \"cube\"\nfile = \"cube.stl\"\ntranslate = [0.25, 0.25, 0.25]\n"
                     "[[mesh]]\nname = \"ball\"\nfile = \"sphere.stl\"\n"
                     "[[fluid]]\nmin = [0.15, 0.15, 0.15]\nmax = [0.35, 0.35, 0.35]\nmesh = \"cube\"\n"
@@ -75,9 +66,10 @@ TEST_CASE("mesh: an STL cube and an STL sphere fill with volume / d^3 particles"
 TEST_CASE("mesh: an STL sphere as a solid has its surface normals pointing outward") {
   auto dir = fresh_dir("mesh_normals");
   make_stl("sphere 0.1 4 " + (dir / "sphere.stl").string() + " --binary");
-  auto frame = initial_frame(dir, scene_3d("[[mesh]]\nname = \"ball\"\nfile = \"sphere.stl\"\n"
-                                           "[[fluid]]\nmin = [0.15, 0.15, 0.15]\nmax = [0.35, 0.35, 0.35]\n"
-                                           "[[solid]]\nshape = \"mesh\"\nmesh = \"ball\"\n"));
+  auto frame =
+      test::initial_frame(dir, scene_3d("[[mesh]]\nname = \"ball\"\nfile = \"sphere.stl\"\n"
+                                        "[[fluid]]\nmin = [0.15, 0.15, 0.15]\nmax = [0.35, 0.35, 0.35]\n"
+                                        "[[solid]]\nshape = \"mesh\"\nmesh = \"ball\"\n"));
   auto body = test::read_dataset(frame, "body").values, x = test::read_dataset(frame, "position").values,
        n = test::read_dataset(frame, "wall_normal").values;
   std::size_t count = 0;
@@ -104,7 +96,7 @@ TEST_CASE("mesh: an open surface is a wall with its layers behind it, and cannot
   make_stl("open-box 0.2 " + (dir / "open.stl").string() + " --inward");  // faces towards the water
   // A box open at the top as a tank, its faces turned towards the water: three layers outside its
   // floor and sides (behind the faces), fluid inside.
-  auto frame = initial_frame(
+  auto frame = test::initial_frame(
       dir, scene_3d("[[mesh]]\nname = \"tank\"\nfile = \"open.stl\"\ntranslate = [0.15, 0.15, 0.15]\n"
                     "[[fluid]]\nmin = [0.05, 0.05, 0.05]\nmax = [0.25, 0.25, 0.15]\n"
                     "[[solid]]\nshape = \"mesh\"\nmesh = \"tank\"\nlayers = 3\n",

@@ -104,17 +104,13 @@ TEST_CASE(
     "solid: the fluid around a body is cut a spacing from its particles, and check --write-initial shows "
     "it") {
   auto dir = test::unique_scratch("solid_cut");
-  test::write_text(
-      dir / "s.toml",
+  const auto frame = test::initial_frame(
+      dir,
       "[scene]\ndimension = 2\n[domain]\nmin = [-0.1, -0.1]\nmax = [1.1, 1.1]\n[particles]\nspacing = 0.02\n"
       "[time]\nend = 0.1\n[[wall]]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n"
       "[[fluid]]\nmin = [0.0, 0.0]\nmax = [1.0, 0.6]\n"
       "[[solid]]\nshape = \"cylinder\"\ncentre = [0.5, 0.3]\nradius = 0.1\n"
       "[[solid]]\nshape = \"box\"\nmin = [0.1, 0.0]\nmax = [0.2, 0.1]\n");
-  auto r = test::run_command(bin() + " check " + (dir / "s.toml").string() + " --write-initial " +
-                             (dir / "init").string());
-  REQUIRE_MESSAGE(r.code == 0, r.output);
-  const auto frame = dir / "init" / "frames" / "frame_00000.h5";
   auto kind = test::read_dataset(frame, "kind").values, x = test::read_dataset(frame, "position").values,
        body = test::read_dataset(frame, "body").values;
   std::vector<std::size_t> fluid, solid;
@@ -142,16 +138,12 @@ TEST_CASE(
 // piston's foot in the wave flume). A corner in the open keeps the bisector.
 TEST_CASE("solid: a body's corner on a wall takes the normal of its wetted face") {
   auto dir = test::unique_scratch("solid_foot");
-  test::write_text(
-      dir / "s.toml",
+  const auto frame = test::initial_frame(
+      dir,
       "[scene]\ndimension = 2\n[domain]\nmin = [-0.1, -0.1]\nmax = [1.1, 1.1]\n[particles]\nspacing = 0.02\n"
       "[method]\nname = \"isph\"\n[time]\nend = 0.1\n[[wall]]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n"
       "[[fluid]]\nmin = [0.0, 0.0]\nmax = [1.0, 0.6]\n"
       "[[solid]]\nshape = \"box\"\nmin = [0.1, 0.0]\nmax = [0.2, 0.1]\nlayers = 1\n");
-  auto r = test::run_command(bin() + " check " + (dir / "s.toml").string() + " --write-initial " +
-                             (dir / "init").string());
-  REQUIRE_MESSAGE(r.code == 0, r.output);
-  const auto frame = dir / "init" / "frames" / "frame_00000.h5";
   auto x = test::read_dataset(frame, "position").values, n = test::read_dataset(frame, "wall_normal").values,
        body = test::read_dataset(frame, "body").values;
   auto normal_at = [&](double px, double py) {
@@ -430,11 +422,7 @@ TEST_CASE("fluid shapes: a disc and a ball of fluid hold their area and volume i
   auto dir = test::unique_scratch("fluid_shapes");
   std::filesystem::create_directories(dir);
   auto count = [&](const std::string& text) {
-    test::write_text(dir / "s.toml", text);
-    auto r = test::run_command(bin() + " check " + (dir / "s.toml").string() + " --write-initial " +
-                               (dir / "init").string());
-    REQUIRE_MESSAGE(r.code == 0, r.output);
-    auto kind = test::read_dataset(dir / "init" / "frames" / "frame_00000.h5", "kind").values;
+    auto kind = test::read_dataset(test::initial_frame(dir, text), "kind").values;
     return double(std::count(kind.begin(), kind.end(), 0.0));
   };
   // R = 10 d: the lattice points within R of the centre, pi R^2 / d^2 = 314.2 (measured 316).

@@ -123,4 +123,14 @@ inline CommandResult run_command(const std::string& cmd) {
   return {code, out};
 }
 
+// Writes the scene text to dir/s.toml, runs `ryushi check --write-initial` on it and returns the
+// frame it wrote (the generated particles before any step).
+inline fs::path initial_frame(const fs::path& dir, const std::string& scene_text) {
+  write_text(dir / "s.toml", scene_text);
+  auto r = run_command(std::string(RYUSHI_BINARY) + " check " + (dir / "s.toml").string() +
+                       " --write-initial " + (dir / "init").string());
+  REQUIRE_MESSAGE(r.code == 0, r.output);
+  return dir / "init" / "frames" / "frame_00000.h5";
+}
+
 }  // namespace ryushi::test

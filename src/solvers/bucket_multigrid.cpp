@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "ecs/reusable_buffer.hpp"
 #include "solvers/vector_ops.hpp"
 
 namespace ryushi::solvers {
@@ -17,29 +18,11 @@ namespace {
 
 using Coord = std::array<std::int64_t, 3>;
 
-// Storage kept from one setup to the next (the pressure pipeline rebuilds the hierarchy every
-// step): arrays over 32 MiB are mapped afresh by glibc at every allocation, and the kernel's
-// zeroing of their pages was 12% of an MPS step at 1.3M particles. Written in parallel, so no
-// serial zero-fill either.
-template <class U>
-struct Buffer {
-  std::unique_ptr<U[]> data;
-  std::size_t capacity = 0;
-  U* ensure(std::size_t n) {
-    if (n > capacity) {
-      data = std::make_unique_for_overwrite<U[]>(n);
-      capacity = n;
-    }
-    return data.get();
-  }
-  std::size_t bytes() const { return capacity * sizeof(U); }
-};
-
 template <class T>
 struct Level {
   CsrMatrix<T> A;     // the coarse levels' own matrices; at level 0 empty (see values0)
   CsrView<T> view;    // what the cycle reads: A, or at level 0 the caller's structure
-  Buffer<T> values0;  // level 0 in float: the caller's values, converted
+  ReusableBuffer<T> values0;  // level 0 in float: the caller's values, converted
   std::vector<T> inverse_diagonal;
   std::vector<std::uint32_t> to_coarse;                  // this level's element -> next level's
   std::vector<std::uint64_t> member_offsets{0};          // next level's element -> members here
@@ -50,8 +33,8 @@ struct Level {
   // and A z is the residual's product from before the correction, so the sweep reads A P's
   // 3^D entries instead of A's (2D MPS: 9 instead of about 30 per row).
   std::size_t ap_slots = 0;  // 0: not kept
-  Buffer<std::uint32_t> ap_col;
-  Buffer<T> ap_val;
+  ReusableBuffer<std::uint32_t> ap_col;
+  ReusableBuffer<T> ap_val;
   mutable std::vector<T> r, z, tmp;
 };
 
@@ -93,8 +76,8 @@ std::vector<Coord> aggregate(const std::vector<Coord>& q, int D, std::vector<std
 // A_c = scale * P^T A P, row by row: each coarse row gathers its members' rows into the 3^D
 // slots given by the bucket offset of the column's coarse element (Algorithm 1, no atomics).
 struct GalerkinScratch {
-  Buffer<double> val;
-  Buffer<std::int64_t> col;
+  ReusableBuffer<double> val;
+  ReusableBuffer<std::int64_t> col;
 };
 
 // q: the fine elements' bucket coordinates at the coarse level's resolution (the aggregate of j

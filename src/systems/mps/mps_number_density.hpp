@@ -33,7 +33,9 @@ class MpsNumberDensity final : public System<D> {
     auto n = ctx.write(components::number_density);
     auto rho = ctx.write(components::density);
     auto role = ctx.write(components::pressure_role);
-    double* weight = ctx.write(mps_pair_weights_resource).ensure(nl.indices.size());
+    auto& weights = ctx.write(mps_pair_weights_resource);
+    double* weight = weights.w.ensure(nl.indices.size());
+    weights.slots = nl.indices.size();
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, x.size(), 1024), [&](auto range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         if (kind[i] == kDummy) {

@@ -5,27 +5,17 @@
 // instead of a square root and a division per pair each (at 1.28M particles those were a third
 // of the two systems' time). The values are the ones those systems computed before, bit for bit.
 #include <cstddef>
-#include <memory>
 
 #include "ecs/resources.hpp"
+#include "ecs/reusable_buffer.hpp"
 
 namespace ryushi {
 
 struct MpsPairWeights {
   // Not zero-filled: the slots in the gaps between a filtered list's blocks are never touched,
   // so their pages never become resident.
-  std::unique_ptr<double[]> w;
-  std::size_t capacity = 0;
+  ReusableBuffer<double> w;
   std::size_t slots = 0;  // the slot count of the list they were computed for (readers check it)
-
-  double* ensure(std::size_t n) {
-    if (n > capacity) {
-      w = std::make_unique_for_overwrite<double[]>(n);
-      capacity = n;
-    }
-    slots = n;
-    return w.get();
-  }
 };
 
 inline constexpr Resource<MpsPairWeights> mps_pair_weights_resource{"mps_pair_weights"};

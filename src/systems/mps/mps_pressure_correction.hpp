@@ -34,7 +34,7 @@ class MpsPressureCorrection final : public System<D> {
     if (weights.slots != nl.indices.size())
       throw std::logic_error(
           "mps_pressure_correction: the pair weights do not belong to this neighbour list");
-    const double* weight = weights.w.get();
+    const double* weight = weights.w.data.get();
     const auto& domain = ctx.read(domain_resource<D>);
     auto p = ctx.read(components::pressure);
     auto kind = ctx.read(components::kind);

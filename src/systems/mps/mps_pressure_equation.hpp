@@ -46,7 +46,7 @@ class MpsPressureEquation final : public System<D> {
     const auto& weights = ctx.read(mps_pair_weights_resource);
     if (weights.slots != nl.indices.size())
       throw std::logic_error("ppe_assembly: the pair weights do not belong to this neighbour list");
-    const double* weight = weights.w.get();
+    const double* weight = weights.w.data.get();
     auto x = ctx.read(components::position);
     auto n = ctx.read(components::number_density);
     auto role = ctx.read(components::pressure_role);
