@@ -113,6 +113,22 @@ int main(int argc, char** argv) {
   solve_cmd->add_option("--tol", solve.tolerance, "Relative residual |b - Ax|/|b|")->check(CLI::PositiveNumber);
   solve_cmd->add_option("--max-iterations", solve.max_iterations, "Iteration cap")->check(CLI::PositiveNumber);
   solve_cmd->add_option("--bucket-width", solve.bucket_width, "Level-1 bucket width (default: longest coupling)");
+  solve_cmd->add_option("--pre-smoothing", solve.pre_smoothing, "Jacobi sweeps before restriction")
+      ->check(CLI::Range(0, 16));
+  solve_cmd->add_option("--post-smoothing", solve.post_smoothing, "Jacobi sweeps after prolongation")
+      ->check(CLI::Range(0, 16));
+  solve_cmd->add_option("--bottom-smoothing", solve.bottom_smoothing, "Jacobi sweeps on the coarsest level")
+      ->check(CLI::Range(1, 64));
+  solve_cmd
+      ->add_option("--bottom-size", solve.bottom_size, "A level with at most this many rows is the coarsest")
+      ->check(CLI::PositiveNumber);
+  solve_cmd
+      ->add_option(
+          "--jacobi-weight", solve.jacobi_weight,
+          "Weight of the multigrid's Jacobi sweeps (default: 1 with cg, 2/3 with bicgstab, as in scenes)")
+      ->check(CLI::Range(1e-3, 1.5));
+  solve_cmd->add_option("--threads", solve.threads, "Worker threads (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
 
   RenderOptions render;
   auto* render_cmd = app.add_subcommand("render", "PNG pictures and an MP4 of a run's frames (tools/render.py).");

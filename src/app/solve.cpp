@@ -1,9 +1,12 @@
 #include "app/solve.hpp"
 
+#include <tbb/global_control.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "app/exit_codes.hpp"
 #include "solvers/bucket_multigrid.hpp"
@@ -20,8 +23,11 @@ int solve_command(const SolveCommandOptions& o) {
     if (A.rows != A.cols) throw std::invalid_argument(o.matrix + ": matrix is not square");
     if (b.size() != A.rows)
       throw std::invalid_argument(o.rhs + ": " + std::to_string(b.size()) + " values for a matrix of " + std::to_string(A.rows) + " rows");
+    std::optional<tbb::global_control> limit;
+    if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, o.threads);
     auto t0 = Clock::now();
     std::unique_ptr<Preconditioner> M;
+    std::string levels;  // the multigrid's rows x nonzeros per row, finest first
     if (o.preconditioner == "none") {
       M = std::make_unique<IdentityPreconditioner>();
     } else if (o.preconditioner == "jacobi") {
@@ -46,7 +52,19 @@ int solve_command(const SolveCommandOptions& o) {
       mo.cycle = o.cycle == "v" ? MultigridOptions::Cycle::V : MultigridOptions::Cycle::W;
       mo.scale_correction = o.cycle == "sw";
       mo.single_precision = o.precision == "mixed";
-      M = std::make_unique<BucketMultigrid>(A, raw, D, width, mo);
+      mo.pre_smoothing = o.pre_smoothing;
+      mo.post_smoothing = o.post_smoothing;
+      mo.bottom_smoothing = o.bottom_smoothing;
+      mo.bottom_size = o.bottom_size;
+      mo.jacobi_weight = o.jacobi_weight > 0 ? o.jacobi_weight : o.krylov == "bicgstab" ? 2.0 / 3.0 : 1.0;
+      auto mg = std::make_unique<BucketMultigrid>(A, raw, D, width, mo);
+      for (auto& l : mg->levels()) {
+        char b[64];
+        std::snprintf(b, sizeof b, "%s%zux%.1f", levels.empty() ? "" : ",", l.rows,
+                      double(l.nonzeros) / double(std::max<std::size_t>(l.rows, 1)));
+        levels += b;
+      }
+      M = std::move(mg);
     }
     double setup = std::chrono::duration<double>(Clock::now() - t0).count();
     std::vector<double> x(A.rows, 0.0);
@@ -54,7 +72,8 @@ int solve_command(const SolveCommandOptions& o) {
     SolveOptions so{o.tolerance, o.max_iterations};
     auto s = o.krylov == "bicgstab" ? bicgstab(A, b, x, *M, so) : conjugate_gradient(A, b, x, *M, so);
     double solve = std::chrono::duration<double>(Clock::now() - t1).count();
-    std::printf("setup_s=%.6f solve_s=%.6f iters=%d relres=%.3e\n", setup, solve, s.iterations, s.relative_residual);
+    std::printf("setup_s=%.6f solve_s=%.6f iters=%d relres=%.3e%s%s\n", setup, solve, s.iterations,
+                s.relative_residual, levels.empty() ? "" : " levels=", levels.c_str());
     if (!s.converged) {
       std::fprintf(stderr, "ryushi: solve did not converge: %s\n", s.reason.c_str());
       return kExitNumericalFailure;

@@ -1,7 +1,9 @@
 #pragma once
 // `ryushi solve A.mtx --rhs b.txt --coords x.txt ...`: solves an exported system and prints one
-// line `setup_s=.. solve_s=.. iters=.. relres=..`, so other solvers can be compared on the very
-// same matrix. Exit 0 converged, 2 bad input, 3 not converged (the reason goes to stderr).
+// line `setup_s=.. solve_s=.. iters=.. relres=..` (and the multigrid's levels), so other solvers
+// and other multigrid settings can be compared on the very same matrix. Exit 0 converged, 2 bad
+// input, 3 not converged (the reason goes to stderr).
+#include <cstddef>
 #include <string>
 
 namespace ryushi {
@@ -15,6 +17,11 @@ struct SolveCommandOptions {
   double tolerance = 1e-8;
   int max_iterations = 10000;
   double bucket_width = 0;  // 0: the longest coupling |x_i - x_j| over the matrix entries
+  // The multigrid's smoothing and bottom, as the scene's [solver] keys set them.
+  int pre_smoothing = 1, post_smoothing = 1, bottom_smoothing = 2;
+  std::size_t bottom_size = 64;
+  double jacobi_weight = 0;  // 0: the scenes' default for the Krylov method (1 with cg, 2/3 with bicgstab)
+  int threads = 0;           // 0: all cores
 };
 
 int solve_command(const SolveCommandOptions& options);

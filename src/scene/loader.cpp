@@ -308,6 +308,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     sv.post_smoothing = static_cast<int>(integer("post_smoothing"));
     sv.bottom_smoothing = static_cast<int>(integer("bottom_smoothing"));
     sv.bottom_size = integer("bottom_size");
+    sv.jacobi_weight = root["solver"]["jacobi_weight"].value_or(isph ? 2.0 / 3.0 : 1.0);
   }
   sc.end_time = *get("time", "end").value<double>();
   sc.cfl = root["time"]["cfl"].value_or(swe ? 0.5 : 0.2);

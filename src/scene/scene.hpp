@@ -138,6 +138,7 @@ struct SolverSpec {
   int max_iterations = 1000;
   int pre_smoothing = 1, post_smoothing = 1, bottom_smoothing = 2;
   long long bottom_size = 64;
+  double jacobi_weight = 1.0;  // the method's default: 1 for mps, 2/3 for isph (schema)
 };
 
 // [swe], [bed] and [splitting]: the shallow-water method (docs/swe.md).

@@ -19,6 +19,7 @@ inline solvers::MultigridOptions multigrid_options(const SolverSpec& s) {
   o.post_smoothing = s.post_smoothing;
   o.bottom_smoothing = s.bottom_smoothing;
   o.bottom_size = static_cast<std::size_t>(s.bottom_size);
+  o.jacobi_weight = s.jacobi_weight;
   return o;
 }
 

@@ -30,6 +30,34 @@ auto reduce_particles(std::size_t n, std::pair<double, double> init, Body&& body
       });
 }
 
+// The leading edge of the water body along x: the largest x of a fluid particle with another
+// fluid particle within 2 d (probes.hpp). Candidates are the particles in a strip behind the
+// foremost one, x_max; a candidate is decided once its whole 2 d neighbourhood lies in the
+// strip, and the strip doubles until one is (all particles isolated: x_max itself).
+template <int D>
+double body_front(const World<D>& world, double x_max, double d) {
+  auto& x = world.column(components::position);
+  auto& kind = world.column(components::kind);
+  const double reach = 2 * d, reach2 = reach * reach;
+  std::vector<std::size_t> strip;
+  for (double width = 8 * d;; width *= 2) {
+    strip.clear();
+    for (std::size_t i = 0; i < world.size(); ++i)
+      if (kind[i] == kFluid && x[i][0] >= x_max - width) strip.push_back(i);
+    std::sort(strip.begin(), strip.end(), [&](auto a, auto b) { return x[a][0] > x[b][0]; });
+    const bool whole = strip.size() == static_cast<std::size_t>(std::count(kind.begin(), kind.end(), kFluid));
+    for (std::size_t c = 0; c < strip.size(); ++c) {
+      const double xc = x[strip[c]][0];
+      if (!whole && xc - reach < x_max - width) break;  // its neighbours may lie outside the strip
+      for (std::size_t k = c + 1; k < strip.size() && x[strip[k]][0] >= xc - reach; ++k)
+        if ((x[strip[k]] - x[strip[c]]).squaredNorm() <= reach2) return xc;
+      for (std::size_t k = c; k-- > 0 && x[strip[k]][0] <= xc + reach;)
+        if ((x[strip[k]] - x[strip[c]]).squaredNorm() <= reach2) return xc;
+    }
+    if (whole) return x_max;
+  }
+}
+
 // The surface of the water column standing on the probe's base point (probes.hpp). Candidates are
 // the particles within the support of the vertical line; the line is sampled every d/4.
 template <int D>
@@ -112,7 +140,7 @@ std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const Wo
       auto r = reduce_particles(world.size(), {lowest, 0.0}, [&](std::size_t i, auto& acc) {
         if (kind[i] == kFluid) acc.first = std::max(acc.first, x[i][0]);
       }, true);
-      out.push_back(r.first + 0.5 * d);
+      out.push_back(body_front(world, r.first, d) + 0.5 * d);
     } else if (probe.type == "particle_count") {
       std::size_t count = 0;
       for (std::size_t i = 0; i < world.size(); ++i) count += kind[i] == kFluid;

@@ -2,8 +2,16 @@
 // Probes sampled between steps into probes.csv:
 //   pressure      Shepard-normalised kernel interpolation of fluid pressure at a point:
 //                 p(x) = sum_j p_j V_j W(x - x_j) / sum_j V_j W(x - x_j)
-//   surge_front   max over fluid particles of x (first axis) + d/2, the particle's outer edge,
-//                 so that it equals the block width at t = 0
+//   surge_front   the leading edge of the water body: max of x (first axis) + d/2, the outer
+//                 edge, over the fluid particles that have another fluid particle within 2 d,
+//                 so that it equals the block width at t = 0. A droplet thrown ahead of the
+//                 surge is not the front (MPS at a/l0 = 40 throws one 3-4 d ahead of the tongue,
+//                 and whether it does changes with round-off: the a/l0 = 20 and 40 fronts were
+//                 3.8-4.3% apart over T <= 2.5 in ten runs that differed only in the solver's
+//                 round-off, and 5.8% in the one with a droplet). A tongue one particle thick
+//                 stays the front: its tip particles are 1.5-2 d apart in the coarse I-SPH(2)
+//                 collapse, where a reach of 1.5 d made the front step back. With every particle
+//                 isolated, the largest x
 //   water_height  elevation of the surface of the water column standing on the probe's base
 //                 point: going up the vertical line from the base, the first height where the
 //                 fluid fill fraction f(z) falls below 1/2 (linear between samples d/4 apart).
