@@ -1,9 +1,9 @@
 // The MPS method (moving particle semi-implicit; BMG paper section 2) as a recipe, registered
 // as "mps". One step:
-//   neighbour_search         pairs within r_e + skin at x^k (reused at x*)
+//   neighbour_search         pairs within r_e + 2.5 cfl l0 at x^k (from a Verlet list with a skin)
 //   mps_explicit_forces      u* = u + dt (nu lap u + g), x* = x + dt u*
-//   support_filter           the list narrowed to r_e at x*
-//   mps_number_density       n* at x*; surface where n* < beta n0 (p = 0)
+//   mps_number_density       the list narrowed to r_e at x*, n* there; surface where n* < beta n0
+//                            (p = 0)
 //   ppe_assembly             -lap p = gamma rho0/dt^2 (n* - n0)/n0 over unknown particles
 //   multigrid_setup          (or jacobi_setup) the preconditioner from the current positions
 //   linear_solve             Krylov solve into the pressure column
@@ -17,16 +17,14 @@
 #include <cstdio>
 
 #include "methods/method.hpp"
-
 #include "methods/scene_particles.hpp"
+#include "systems/integrate/velocity_time_step.hpp"
 #include "systems/mps/mps_collision.hpp"
 #include "systems/mps/mps_explicit_forces.hpp"
 #include "systems/mps/mps_number_density.hpp"
 #include "systems/mps/mps_pressure_correction.hpp"
 #include "systems/mps/mps_pressure_equation.hpp"
-#include "systems/integrate/velocity_time_step.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
-#include "systems/neighbour/support_filter.hpp"
 #include "systems/pressure/linear_solve.hpp"
 #include "systems/pressure/preconditioner_setup.hpp"
 #include "systems/pressure/pressure_system_dump.hpp"
@@ -81,9 +79,7 @@ std::vector<SystemPtr<D>> mps_pipeline(const Scene& s, const MpsParameters<D>& p
   std::vector<SystemPtr<D>> list{
       std::make_shared<NeighbourSearch<D>>(p.search_radius(), kDummy, s.neighbour_skin * s.spacing, false),
       std::make_shared<MpsExplicitForces<D>>(p),
-      // The list holds the step's motion; from x* on only the pairs within r_e count.
-      std::make_shared<SupportFilter<D>>(p.weight.support()),
-      std::make_shared<MpsNumberDensity<D>>(p),
+      std::make_shared<MpsNumberDensity<D>>(p),  // narrows the list to r_e at x* as it goes
       std::make_shared<MpsPressureEquation<D>>(p),
   };
   if (s.solver.preconditioner != "none") list.push_back(std::make_shared<PreconditionerSetup<D>>(s.solver));

@@ -3,13 +3,23 @@
 // eq. 6), for fluid and wall particles, and the free-surface rule of MPS: a particle with
 // n*_i < beta n0 is on the surface and gets the Dirichlet value p = 0 (Koshizuka's beta = 0.97).
 // Writes the `pressure_role` of every particle (unknown, surface, none for dummies) and, for
-// output, density = rho0 n* / n0. Each pair's weight is kept for the systems after it at the
-// same positions (mps_pair_weights.hpp).
+// output, density = rho0 n* / n0.
+//
+// The list it reads holds the step's motion (pairs within r_e + 2.5 cfl l0 at x^k); from x* on
+// only the pairs within r_e count. This system narrows the list to r_e at x* in the same pass
+// that computes the weights (filter_rows.hpp: each distance once, where a separate filter and
+// this sum computed each twice), and keeps each pair's weight for the systems after it at the
+// same positions (mps_pair_weights.hpp). The narrowed list is row for row the one
+// filter_neighbour_list gives, and the weights and sums are the ones computed before, bit for
+// bit.
+#include <utility>
+
 #include "ecs/system.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/mps/mps_pair_weights.hpp"
 #include "systems/mps/mps_parameters.hpp"
-#include "systems/neighbour/neighbour_list.hpp"
+#include "systems/neighbour/filter_rows.hpp"
+#include "systems/neighbour/neighbour_search.hpp"
 
 namespace ryushi {
 
@@ -20,13 +30,13 @@ class MpsNumberDensity final : public System<D> {
   std::string name() const override { return "mps_number_density"; }
   Access access() const override {
     return Access{}
-        .read(components::position, components::kind, neighbours_resource, domain_resource<D>)
-        .write(components::number_density, components::density, components::pressure_role,
-               mps_pair_weights_resource);
+        .read(components::position, components::kind, domain_resource<D>)
+        .write(neighbours_resource, components::number_density, components::density,
+               components::pressure_role, mps_pair_weights_resource);
   }
   void initialise(World<D>&, Resources& res) override { res.ensure(mps_pair_weights_resource); }
   void run(SystemContext<D>& ctx) override {
-    const auto& nl = ctx.read(neighbours_resource);
+    auto& list = ctx.write(neighbours_resource);
     const auto& domain = ctx.read(domain_resource<D>);
     auto x = ctx.read(components::position);
     auto kind = ctx.read(components::kind);
@@ -34,33 +44,35 @@ class MpsNumberDensity final : public System<D> {
     auto rho = ctx.write(components::density);
     auto role = ctx.write(components::pressure_role);
     auto& weights = ctx.write(mps_pair_weights_resource);
-    double* weight = weights.w.ensure(nl.indices.size());
-    weights.slots = nl.indices.size();
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, x.size(), 1024), [&](auto range) {
-      for (std::size_t i = range.begin(); i != range.end(); ++i) {
-        if (kind[i] == kDummy) {
-          n[i] = p_.n0;
-          role[i] = kPressureNone;
-          continue;
-        }
-        // Squared distances into the row's weight slots, then the weights in place (a loop
-        // the compiler vectorises), then their sum in the pairs' order.
-        const auto first = nl.offsets[i], count = nl.count(i);
-        double* w = weight + first;
-        for (std::uint32_t k = 0; k < count; ++k)
-          w[k] = domain.offset(x[i], x[nl.indices[first + k]]).squaredNorm();
-        p_.weight.mps_weights(w, w, count);
-        double sum = 0;
-        for (std::uint32_t k = 0; k < count; ++k) sum += w[k];
-        n[i] = sum;
-        rho[i] = p_.rho0 * sum / p_.n0;
-        role[i] = sum < p_.surface_threshold * p_.n0 ? kPressureSurface : kPressureUnknown;
+    double* weight = weights.w.ensure(list.indices.size());  // the narrowed list has the wide one's slots
+    weights.slots = list.indices.size();
+    // Per row, the survivors' weights from their squared distances (a loop the compiler
+    // vectorises) into the row's slots, then their sum in the pairs' order. Dummy rows are
+    // narrowed too (a later system may read them) but carry no number density.
+    auto row = [&](std::size_t i, const double* r2) {
+      if (kind[i] == kDummy) {
+        n[i] = p_.n0;
+        role[i] = kPressureNone;
+        return;
       }
-    });
+      const auto count = narrowed_.count(i);
+      double* w = weight + narrowed_.offsets[i];
+      p_.weight.mps_weights(r2, w, count);
+      double sum = 0;
+      for (std::uint32_t k = 0; k < count; ++k) sum += w[k];
+      n[i] = sum;
+      rho[i] = p_.rho0 * sum / p_.n0;
+      role[i] = sum < p_.surface_threshold * p_.n0 ? kPressureSurface : kPressureUnknown;
+    };
+    filter_rows<D, true>(domain, p_.weight.support(), x, list, narrowed_, row);
+    narrowed_.builds = list.builds;
+    narrowed_.candidate_bytes = list.bytes();  // kept for reuse
+    std::swap(list, narrowed_);                // the wide list's storage is reused next step
   }
 
  private:
   MpsParameters<D> p_;
+  NeighbourList narrowed_;
 };
 
 }  // namespace ryushi

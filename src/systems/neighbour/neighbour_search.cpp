@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <type_traits>
 
+#include "systems/neighbour/filter_rows.hpp"
+
 namespace ryushi {
 
 namespace {
@@ -201,46 +203,7 @@ void build_neighbour_list(const Domain<D>& domain, double radius, std::span<cons
 template <int D>
 void filter_neighbour_list(const Domain<D>& domain, double radius, std::span<const Vec<D>> x,
                            const NeighbourList& candidates, NeighbourList& out) {
-  const std::size_t N = candidates.size();
-  const double r2 = radius * radius;
-  const bool periodic = domain.any_periodic();
-  // One distance pass, no packing copy (which was half the filter's time and a second list in
-  // memory): each parallel block writes its rows one after the other from the candidates' start
-  // of its first row, so the rows are packed within a block and the list has a gap only between
-  // blocks (NeighbourList::ends). (Rows left at the candidates' starts, with a gap after each,
-  // made WCSPH's pair loops 5-10% slower.) A survivor is written before it is known to be one:
-  // the slot is reused by the next candidate or the next row, and stays inside the block.
-  out.indices.resize(candidates.indices.size());
-  out.offsets.resize(N + 1);
-  out.offsets[N] = candidates.offsets[N];
-  out.ends.resize(N);
-  auto pass = [&](auto periodic_axes) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, N, 2048), [&](auto r) {
-      std::uint32_t cursor = candidates.offsets[r.begin()];
-      for (std::size_t i = r.begin(); i != r.end(); ++i) {
-        const Vec<D> xi = x[i];
-        std::uint32_t* dst = out.indices.data() + cursor;
-        std::uint32_t c = 0;
-        for (auto j : candidates.of(i)) {
-          Vec<D> d;
-          if constexpr (decltype(periodic_axes)::value)
-            d = domain.displacement(xi, x[j]);
-          else
-            d = xi - x[j];
-          dst[c] = j;
-          c += d.squaredNorm() <= r2;  // branch-free: which candidates survive is not predictable
-        }
-        out.offsets[i] = cursor;
-        cursor += c;
-        out.ends[i] = cursor;
-      }
-    });
-  };
-  if (periodic)
-    pass(std::true_type{});
-  else
-    pass(std::false_type{});
-  out.radius = radius;
+  filter_rows<D, false>(domain, radius, x, candidates, out, [](std::size_t, const double*) {});
 }
 
 template <int D>
