@@ -12,8 +12,6 @@
 // same positions (mps_pair_weights.hpp). The narrowed list is row for row the one
 // filter_neighbour_list gives, and the weights and sums are the ones computed before, bit for
 // bit.
-#include <utility>
-
 #include "ecs/system.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/mps/mps_pair_weights.hpp"
@@ -65,9 +63,7 @@ class MpsNumberDensity final : public System<D> {
       role[i] = sum < p_.surface_threshold * p_.n0 ? kPressureSurface : kPressureUnknown;
     };
     filter_rows<D, true>(domain, p_.weight.support(), x, list, narrowed_, row);
-    narrowed_.builds = list.builds;
-    narrowed_.candidate_bytes = list.bytes();  // kept for reuse
-    std::swap(list, narrowed_);                // the wide list's storage is reused next step
+    adopt_narrowed(list, narrowed_);
   }
 
  private:

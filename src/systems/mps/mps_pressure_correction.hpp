@@ -6,7 +6,6 @@
 // wall particles carry pressure; dummies are left out. With clamp_negative_pressure, p < 0 is
 // read as 0. The gradient is written to `pressure_gradient` (an output field).
 #include <algorithm>
-#include <stdexcept>
 
 #include "ecs/system.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
@@ -30,11 +29,7 @@ class MpsPressureCorrection final : public System<D> {
   void run(SystemContext<D>& ctx) override {
     const double dt = ctx.read(resources::dt);
     const auto& nl = ctx.read(neighbours_resource);
-    const auto& weights = ctx.read(mps_pair_weights_resource);
-    if (weights.slots != nl.indices.size())
-      throw std::logic_error(
-          "mps_pressure_correction: the pair weights do not belong to this neighbour list");
-    const double* weight = weights.w.data.get();
+    const double* weight = ctx.read(mps_pair_weights_resource).of(nl, "mps_pressure_correction");
     const auto& domain = ctx.read(domain_resource<D>);
     auto p = ctx.read(components::pressure);
     auto kind = ctx.read(components::kind);

@@ -43,10 +43,7 @@ class MpsPressureEquation final : public System<D> {
     // applies (dt/dt_chosen)^2 of the correction: a weaker relaxation for that one step.
     const double dt = ctx.read(resources::dt_chosen);
     const auto& nl = ctx.read(neighbours_resource);
-    const auto& weights = ctx.read(mps_pair_weights_resource);
-    if (weights.slots != nl.indices.size())
-      throw std::logic_error("ppe_assembly: the pair weights do not belong to this neighbour list");
-    const double* weight = weights.w.data.get();
+    const double* weight = ctx.read(mps_pair_weights_resource).of(nl, "ppe_assembly");
     auto x = ctx.read(components::position);
     auto n = ctx.read(components::number_density);
     auto role = ctx.read(components::pressure_role);

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <span>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "systems/neighbour/domain.hpp"
@@ -76,6 +77,14 @@ void filter_rows(const Domain<D>& domain, double radius, std::span<const Vec<D>>
   else
     pass(std::false_type{});
   out.radius = radius;
+}
+
+// `narrowed` (filtered from `list`) becomes the step's list, and `list`'s storage goes back to
+// the filtering system, to be filtered into again next step without an allocation.
+inline void adopt_narrowed(NeighbourList& list, NeighbourList& narrowed) {
+  narrowed.builds = list.builds;
+  narrowed.candidate_bytes = list.bytes();
+  std::swap(list, narrowed);
 }
 
 }  // namespace ryushi

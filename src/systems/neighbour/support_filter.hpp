@@ -10,10 +10,10 @@
 // the corrector has moved the particles by dt (v - v*), may lose a pair that came within the
 // support during the correction (a change below the step's own truncation error).
 #include <span>
-#include <utility>
 #include <vector>
 
 #include "ecs/system.hpp"
+#include "systems/neighbour/filter_rows.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
 
 namespace ryushi {
@@ -31,9 +31,7 @@ class SupportFilter final : public System<D> {
     const auto& domain = ctx.read(domain_resource<D>);
     auto& list = ctx.write(neighbours_resource);
     filter_neighbour_list<D>(domain, support_, x, list, narrowed_);
-    narrowed_.builds = list.builds;
-    narrowed_.candidate_bytes = list.bytes();  // kept for reuse
-    std::swap(list, narrowed_);  // the wide list's storage is reused next step
+    adopt_narrowed(list, narrowed_);
   }
 
  private:
