@@ -207,3 +207,43 @@ TEST_CASE("neighbours: a Verlet list with a skin gives the rebuilt list at every
     CHECK(builds <= steps / 3);  // and reused in between
   }
 }
+
+TEST_CASE("neighbours: the compact candidates give back every index, large jumps and descending rows too") {
+  // Rows with steps of every size: within 16 bits, at its edges, beyond it (escapes), backwards
+  // (periodic images come out of order), the largest indices, and an empty row.
+  NeighbourList list;
+  list.offsets = {0};
+  std::mt19937 rng(3);
+  const std::uint32_t steps[] = {1, 2, 32767, 32768, 32769, 65536, 1u << 20, 4000000000u};
+  const std::size_t N = 400;
+  for (std::size_t i = 0; i < N; ++i) {
+    std::uint32_t j = static_cast<std::uint32_t>(i);
+    const std::size_t n = i == 7 ? 0 : rng() % 40;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::uint32_t step = steps[rng() % 8];
+      j = rng() % 3 == 0 ? j - step : j + step;  // modulo 2^32, as the decoding is
+      list.indices.push_back(j);
+    }
+    list.indices.push_back(0xffffffffu);
+    list.indices.push_back(0);
+    list.offsets.push_back(static_cast<std::uint32_t>(list.indices.size()));
+  }
+  CandidateList compact;
+  compact.assign(list);
+  REQUIRE(compact.size() == N);
+  CHECK(compact.count == list.indices.size());
+  bool same = true;
+  for (std::size_t i = 0; i < N; ++i) {
+    std::vector<std::uint32_t> row;
+    compact.for_each(i, [&](std::uint32_t j) { row.push_back(j); });
+    auto expected = list.of(i);
+    same = same && std::equal(row.begin(), row.end(), expected.begin(), expected.end());
+  }
+  CHECK(same);
+  // Consecutive indices (a cell's run) take two bytes each.
+  NeighbourList runs;
+  runs.offsets = {0, 1000};
+  for (std::uint32_t j = 1; j <= 1000; ++j) runs.indices.push_back(j);
+  compact.assign(runs);
+  CHECK(compact.slots.size() == 1000);
+}

@@ -1,11 +1,14 @@
 #pragma once
-// The Verlet filter's pass (filter_neighbour_list in neighbour_search.hpp) as a template that a
-// system can run its own per-row work inside: `out` = the pairs of `candidates` within `radius`,
-// row for row in the same order, and `row_done(i, r2)` runs right after row i is filtered, in
-// the same task, while the row is in cache. With KeepR2, r2 points at the survivors' squared
-// distances in the row's order (a scratch array of the task's, valid during the call); without,
-// it is null. MPS's number density computes its weights there: one pass over the pairs at x*
-// instead of a filter pass and a weight pass that both compute every distance.
+// Filters a list's rows to the pairs within a radius, row for row in the same order.
+// - filter_rows: a narrowing (the list of a step to the kernel's support at x*): `out` gets the
+//   input's slots, a system can run its own per-row work inside (`row_done(i, r2)` right after
+//   row i is filtered, in the same task, while the row is in cache; with KeepR2, r2 points at
+//   the survivors' squared distances in the row's order, a scratch array of the task's valid
+//   during the call; without, it is null). MPS's number density computes its weights there: one
+//   pass over the pairs at x* instead of a filter pass and a weight pass that both compute every
+//   distance.
+// - filter_row: one row, the loop both this and the Verlet filter (filter_candidates in
+//   neighbour_search.hpp) run.
 #include <tbb/parallel_for.h>
 
 #include <cstdint>
@@ -19,20 +22,43 @@
 
 namespace ryushi {
 
+// Writes the candidates that `for_each_candidate(f)` gives to dst and keeps those within
+// sqrt(reach2) of xi (and their squared distances in r2 with KeepR2); returns how many. Every
+// candidate is written before it is known to be kept, and the count advances by the outcome:
+// which candidates survive is not predictable, and a branch on it mispredicts.
+template <int D, bool KeepR2, bool Periodic, class ForEachCandidate>
+inline std::uint32_t filter_row(const Domain<D>& domain, const Vec<D>* pos, const Vec<D>& xi, double reach2,
+                                ForEachCandidate&& for_each_candidate, std::uint32_t* dst, double* r2) {
+  std::uint32_t c = 0;
+  for_each_candidate([&](std::uint32_t j) {
+    Vec<D> d;
+    if constexpr (Periodic)
+      d = domain.displacement(xi, pos[j]);
+    else
+      d = xi - pos[j];
+    const double s = d.squaredNorm();
+    dst[c] = j;
+    if constexpr (KeepR2) r2[c] = s;
+    c += s <= reach2;
+  });
+  return c;
+}
+
 template <int D, bool KeepR2, class RowDone>
-void filter_rows(const Domain<D>& domain, double radius, std::span<const Vec<D>> x,
-                 const NeighbourList& candidates, NeighbourList& out, RowDone&& row_done) {
-  const std::size_t N = candidates.size();
+void filter_rows(const Domain<D>& domain, double radius, std::span<const Vec<D>> x, const NeighbourList& in,
+                 NeighbourList& out, RowDone&& row_done) {
+  const std::size_t N = in.size();
   const double radius2 = radius * radius;
-  // One distance pass, no packing copy (which was half the filter's time and a second list in
-  // memory): each parallel block writes its rows one after the other from the candidates' start
-  // of its first row, so the rows are packed within a block and the list has a gap only between
-  // blocks (NeighbourList::ends). (Rows left at the candidates' starts, with a gap after each,
-  // made WCSPH's pair loops 5-10% slower.) A survivor is written before it is known to be one:
-  // the slot is reused by the next candidate or the next row, and stays inside the block.
-  out.indices.resize(candidates.indices.size());
+  // One distance pass, no packing copy: each row is written where the input's rows lie, packed
+  // one after the other within each run of input rows that follow each other in memory (a
+  // parallel block's rows, or a run inside one), so `out` has the input's slots (a system can
+  // index per-pair arrays by them, MPS's weights) and gaps only where the input has them
+  // (NeighbourList::ends). A row never outgrows its input row, so the packed run never passes
+  // the input run's end, and a task writes only where its own rows' input lies.
+  if (out.indices.size() != in.indices.size())
+    std::vector<std::uint32_t>(in.indices.size()).swap(out.indices);
   out.offsets.resize(N + 1);
-  out.offsets[N] = candidates.offsets[N];
+  out.offsets[N] = in.offsets[N];
   out.ends.resize(N);
   auto pass = [&](auto periodic_axes) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, N, 2048), [&](auto r) {
@@ -45,30 +71,22 @@ void filter_rows(const Domain<D>& domain, double radius, std::span<const Vec<D>>
       // the candidates' size: writing one double per candidate to memory cost more than the
       // distances (3D MPS at 1M particles).
       std::vector<double> r2;
-      std::uint32_t cursor = candidates.offsets[r.begin()];
+      std::uint32_t cursor = in.offsets[r.begin()];
       for (std::size_t i = r.begin(); i != r.end(); ++i) {
-        const Vec<D> xi = pos[i];
-        std::uint32_t* const dst = indices + cursor;
-        const auto row = candidates.of(i);
+        if (i != r.begin() && in.offsets[i] != in.end(i - 1)) cursor = in.offsets[i];  // a new run
+        const auto row = in.of(i);
         if constexpr (KeepR2)
           if (r2.size() < row.size()) r2.resize(row.size());
-        double* const r2_dst = r2.data();
-        std::uint32_t c = 0;
-        for (auto j : row) {
-          Vec<D> d;
-          if constexpr (decltype(periodic_axes)::value)
-            d = domain.displacement(xi, pos[j]);
-          else
-            d = xi - pos[j];
-          const double s = d.squaredNorm();
-          dst[c] = j;
-          if constexpr (KeepR2) r2_dst[c] = s;
-          c += s <= reach2;  // branch-free: which candidates survive is not predictable
-        }
+        const std::uint32_t c = filter_row<D, KeepR2, decltype(periodic_axes)::value>(
+            domain, pos, pos[i], reach2,
+            [&](auto&& f) {
+              for (auto j : row) f(j);
+            },
+            indices + cursor, r2.data());
         out.offsets[i] = cursor;
         cursor += c;
         out.ends[i] = cursor;
-        row_done(i, KeepR2 ? static_cast<const double*>(r2_dst) : nullptr);
+        row_done(i, KeepR2 ? static_cast<const double*>(r2.data()) : nullptr);
       }
     });
   };

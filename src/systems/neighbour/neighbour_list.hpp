@@ -14,8 +14,8 @@ struct NeighbourList {
   std::vector<std::uint32_t> offsets{0};
   std::vector<std::uint32_t> indices;
   // Empty: packed, row i is [offsets[i], offsets[i + 1]). Otherwise row i is [offsets[i],
-  // ends[i]): a Verlet list filtered into storage of its candidates' size without a packing
-  // copy, with gaps between blocks of rows (filter_neighbour_list).
+  // ends[i]), and rows need not follow each other in memory: a filtered list (filter_rows.hpp,
+  // filter_candidates) has gaps between blocks of rows or its blocks out of index order.
   std::vector<std::uint32_t> ends;
   double radius = 0;
   std::size_t builds = 0;           // how many times it was built (a Verlet list is reused in between)

@@ -4,6 +4,7 @@
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <atomic>
 #include <type_traits>
 
 #include "systems/neighbour/filter_rows.hpp"
@@ -207,6 +208,76 @@ void filter_neighbour_list(const Domain<D>& domain, double radius, std::span<con
 }
 
 template <int D>
+void filter_candidates(const Domain<D>& domain, double radius, std::span<const Vec<D>> x,
+                       const CandidateList& candidates, NeighbourList& out, double& kept_fraction) {
+  const std::size_t N = candidates.size();
+  const std::size_t total = candidates.count;
+  const double radius2 = radius * radius;
+  out.offsets.resize(N + 1);
+  out.ends.resize(N);
+  // Storage for the kept fraction of the last call and 10% more (a first call guesses 3/4: in
+  // 3D a sphere of the support holds 58% of one of support + the default skin, in 2D 69%).
+  auto capacity_for = [&](double fraction) {
+    return std::min(
+        total, static_cast<std::size_t>(static_cast<double>(total) * std::min(1.0, 1.1 * fraction)) + 4096);
+  };
+  std::size_t capacity = capacity_for(kept_fraction > 0 ? kept_fraction : 0.75);
+  for (;;) {
+    if (out.indices.size() < capacity || out.indices.size() > capacity + capacity / 4)
+      std::vector<std::uint32_t>(capacity).swap(out.indices);  // fresh: nothing in it is kept
+    std::atomic<std::size_t> placed{0};
+    const std::size_t room = out.indices.size();
+    auto pass = [&](auto periodic_axes) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, N, 2048), [&](auto r) {
+        // Rows are filtered 256 at a time into this task's scratch (in L2) and then copied to
+        // the place they reserve in the list, one after the other. Blocks land in the order
+        // they finish, so the list has gaps nowhere but its rows are not in index order between
+        // blocks (NeighbourList::ends); every row is what it would be anywhere else.
+        thread_local std::vector<std::uint32_t> scratch;
+        const double reach2 = radius2;
+        const Vec<D>* const pos = x.data();
+        std::uint32_t* const offsets = out.offsets.data();
+        std::uint32_t* const ends = out.ends.data();
+        std::uint32_t* const indices = out.indices.data();
+        for (std::size_t lo = r.begin(); lo < r.end(); lo += 256) {
+          const std::size_t hi = std::min(r.end(), lo + 256);
+          const std::size_t bound = candidates.offsets[hi] - candidates.offsets[lo];
+          if (scratch.size() < bound) scratch.resize(bound);
+          std::uint32_t* const dst = scratch.data();
+          std::uint32_t used = 0;
+          for (std::size_t i = lo; i != hi; ++i) {
+            offsets[i] = used;
+            used += filter_row<D, false, decltype(periodic_axes)::value>(
+                domain, pos, pos[i], reach2, [&](auto&& f) { candidates.for_each(i, f); }, dst + used,
+                nullptr);
+            ends[i] = used;
+          }
+          const std::size_t base = placed.fetch_add(used, std::memory_order_relaxed);
+          if (base + used > room) continue;  // out of room: the call goes again with more
+          std::copy_n(dst, used, indices + base);
+          for (std::size_t i = lo; i != hi; ++i) {
+            offsets[i] += static_cast<std::uint32_t>(base);
+            ends[i] += static_cast<std::uint32_t>(base);
+          }
+        }
+      });
+    };
+    if (domain.any_periodic())
+      pass(std::true_type{});
+    else
+      pass(std::false_type{});
+    const std::size_t kept = placed.load();
+    kept_fraction = total > 0 ? static_cast<double>(kept) / static_cast<double>(total) : 0.0;
+    if (kept <= room) {
+      out.offsets[N] = static_cast<std::uint32_t>(kept);
+      break;
+    }
+    capacity = capacity_for(kept_fraction);
+  }
+  out.radius = radius;
+}
+
+template <int D>
 std::pair<double, double> max_displacement_and_speed(const Domain<D>& domain, std::span<const Vec<D>> x,
                                                      std::span<const Vec<D>> ref, std::span<const Vec<D>> v) {
   using Pair = std::pair<double, double>;
@@ -238,6 +309,10 @@ template void filter_neighbour_list<2>(const Domain<2>&, double, std::span<const
                                        const NeighbourList&, NeighbourList&);
 template void filter_neighbour_list<3>(const Domain<3>&, double, std::span<const Vec<3>>,
                                        const NeighbourList&, NeighbourList&);
+template void filter_candidates<2>(const Domain<2>&, double, std::span<const Vec<2>>, const CandidateList&,
+                                   NeighbourList&, double&);
+template void filter_candidates<3>(const Domain<3>&, double, std::span<const Vec<3>>, const CandidateList&,
+                                   NeighbourList&, double&);
 template void build_neighbour_list<2>(const Domain<2>&, double, std::span<const Vec<2>>, CellGrid<2>&,
                                       NeighbourList&, std::span<const std::int32_t>, std::int32_t);
 template void build_neighbour_list<3>(const Domain<3>&, double, std::span<const Vec<3>>, CellGrid<3>&,

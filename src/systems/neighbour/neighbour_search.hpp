@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ecs/system.hpp"
+#include "systems/neighbour/candidate_list.hpp"
 #include "systems/neighbour/cell_grid.hpp"
 #include "systems/neighbour/domain.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
@@ -25,11 +26,18 @@ void build_neighbour_list(const Domain<D>& domain, double radius, std::span<cons
 
 // `out` = the pairs of `candidates` (a list built with a larger radius) within `radius`, in the
 // same order: row for row the list that build_neighbour_list gives for `radius`, at a fraction
-// of its cost. `out` has NeighbourList::ends: storage of the candidates' size, rows packed
-// within each parallel block.
+// of its cost. `out` has NeighbourList::ends and the candidates' slots (filter_rows.hpp).
 template <int D>
 void filter_neighbour_list(const Domain<D>& domain, double radius, std::span<const Vec<D>> x,
                            const NeighbourList& candidates, NeighbourList& out);
+
+// The same from the Verlet list's compact candidates, into storage of about the kept pairs'
+// size (not the candidates'): rows packed, in blocks placed in the order they finish
+// (NeighbourList::ends). kept_fraction: the caller's record of the kept share, which sizes the
+// storage (10% spare; a call that runs out of room goes again with more); 0 at first.
+template <int D>
+void filter_candidates(const Domain<D>& domain, double radius, std::span<const Vec<D>> x,
+                       const CandidateList& candidates, NeighbourList& out, double& kept_fraction);
 
 // Largest |x_i - ref_i| (minimum image on periodic axes) and largest |v_i| (the Verlet list's
 // rebuild test); an empty v gives speed 0.
@@ -79,21 +87,19 @@ class NeighbourSearch final : public System<D> {
       build_neighbour_list<D>(domain, radius_, x, ctx.write(cell_grid_resource<D>), out, kind, skip_kind_);
       return;
     }
-    bool valid =
-        candidates_.builds > 0 && ctx.structure_version() == version_ && x.size() == reference_.size();
+    bool valid = builds_ > 0 && ctx.structure_version() == version_ && x.size() == reference_.size();
     if (valid) {
       const auto v = moves_within_step_ ? ctx.read(components::velocity) : std::span<const Vec<D>>{};
       auto [moved, vmax] = max_displacement_and_speed<D>(domain, x, reference_, v);
       valid = moved + (moves_within_step_ ? vmax * ctx.read(resources::dt) : 0.0) <= 0.5 * skin_;
     }
     if (!valid) {
-      build_neighbour_list<D>(domain, radius_ + skin_, x, ctx.write(cell_grid_resource<D>), candidates_, kind,
-                              skip_kind_);
+      build_candidates(domain, x, ctx.write(cell_grid_resource<D>), kind);
       reference_.assign(x.begin(), x.end());
       version_ = ctx.structure_version();
     }
-    filter_neighbour_list<D>(domain, radius_, x, candidates_, out);
-    out.builds = candidates_.builds;
+    filter_candidates<D>(domain, radius_, x, candidates_, out, kept_fraction_);
+    out.builds = builds_;
     out.candidate_bytes = candidates_.bytes() + reference_.size() * sizeof(Vec<D>);
   }
 
@@ -104,7 +110,7 @@ class NeighbourSearch final : public System<D> {
   // rebuilt every step; the driver keeps its order itself.)
   std::vector<double> checkpoint_state(const World<D>& world, const Resources&) const override {
     std::vector<double> state;
-    if (skin_ <= 0 || candidates_.builds == 0) return state;
+    if (skin_ <= 0 || builds_ == 0) return state;
     state.push_back(world.structure_version() == version_ ? 1.0 : 0.0);
     for (auto& p : reference_) state.insert(state.end(), p.data(), p.data() + D);
     return state;
@@ -119,17 +125,29 @@ class NeighbourSearch final : public System<D> {
       for (int a = 0; a < D; ++a) reference_[i][a] = state[1 + i * D + a];
     std::span<const std::int32_t> kind;
     if (skip_kind_ >= 0) kind = world.column(components::kind);
-    build_neighbour_list<D>(res.get(domain_resource<D>), radius_ + skin_, std::span<const Vec<D>>(reference_),
-                            res.ensure(cell_grid_resource<D>), candidates_, kind, skip_kind_);
+    build_candidates(res.get(domain_resource<D>), std::span<const Vec<D>>(reference_),
+                     res.ensure(cell_grid_resource<D>), kind);
     version_ = world.structure_version();
   }
 
  private:
+  // The candidates are built as a full list and kept in two bytes each (candidate_list.hpp);
+  // the full list is freed at once, so only the build itself holds both.
+  void build_candidates(const Domain<D>& domain, std::span<const Vec<D>> x, CellGrid<D>& grid,
+                        std::span<const std::int32_t> kind) {
+    NeighbourList built;
+    build_neighbour_list<D>(domain, radius_ + skin_, x, grid, built, kind, skip_kind_);
+    candidates_.assign(built);
+    ++builds_;
+  }
+
   double radius_;
   std::int32_t skip_kind_;
   double skin_;
   bool moves_within_step_;
-  NeighbourList candidates_;
+  CandidateList candidates_;
+  std::size_t builds_ = 0;
+  double kept_fraction_ = 0;  // of the candidates, at the last filter (sizes the list's storage)
   std::uint64_t version_ = 0;
   std::vector<Vec<D>> reference_;
 };
