@@ -5,6 +5,7 @@
 
 #include "methods/system_registry.hpp"
 #include "systems/boundary/prescribed_motion.hpp"
+#include "systems/neighbour/neighbour_search.hpp"
 
 namespace ryushi {
 
@@ -57,6 +58,9 @@ MethodSetup<D> build_method(const Scene& s, World<D>& world, const PipelineOptio
     moving.push_back(std::move(body));
   }
   if (!moving.empty()) m.pipeline.insert(m.pipeline.begin(), std::make_shared<PrescribedMotion<D>>(std::move(moving)));
+  for (auto& system : m.pipeline)
+    if (auto* search = dynamic_cast<const NeighbourSearch<D>*>(system.get()))
+      m.search_cell = search->cell_size();
   // The scene's registered [[systems]] go last; the scheduler places them by their access.
   for (auto& extra : s.systems) m.pipeline.push_back(make_registered_system<D>(extra.name, extra.params, m.context));
   return m;

@@ -39,6 +39,10 @@ struct MethodSetup {
   // MPS density is rho0 n*/n0, a diagnostic: an isolated splash particle has n* = 0. WCSPH
   // divides by density, so there zero is a failure.
   bool density_may_vanish = false;
+  // The cell of the neighbour search's grid (its radius plus the Verlet skin; build_method finds
+  // it in the pipeline). The driver sorts the particles by a grid of this cell before the first
+  // step, so the first list comes out in that grid's order; 0: no such search.
+  double search_cell = 0;
   // Per-particle fields its physics makes worth seeing, written to every frame besides the
   // default ones and [output] fields (temperature, the apparent viscosity).
   std::vector<std::string> frame_fields;

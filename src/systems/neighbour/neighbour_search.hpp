@@ -66,6 +66,7 @@ class NeighbourSearch final : public System<D> {
                            bool moves_within_step = true)
       : radius_(radius), skip_kind_(skip_kind), skin_(skin), moves_within_step_(moves_within_step) {}
   std::string name() const override { return "neighbour_search"; }
+  double cell_size() const { return radius_ + skin_; }  // of the grid it builds
   Access access() const override {
     Access a;
     a.read(components::position, components::kind, domain_resource<D>)
