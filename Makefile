@@ -58,12 +58,12 @@ test-sanitize: deps
 	cd build-sanitize && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j$(JOBS)
 
 bench: build py-deps
-	$(BUILD)/bench/ryushi_bench_triad
+	@# issue 13's goals in one sitting and one table (the triad, tools/bench_speedup.sh and
+	@# tools/bench_time_per_unit_T.sh among them); about 25 minutes and 16 GB
+	/usr/bin/python3 tools/bench_issue13.py --build $(BUILD)
 	$(BUILD)/bench/ryushi_bench_neighbours
 	tools/bench_dam_break.sh $(BUILD)
-	tools/bench_speedup.sh $(BUILD)
 	tools/bench_isph.sh $(BUILD) 10
-	tools/bench_time_per_unit_T.sh $(BUILD) 10
 	mkdir -p docs/img
 	$(BUILD)/bench/ryushi_bench_solvers 2
 	/usr/bin/python3 tools/bench_mps_solvers.py --build $(BUILD)
