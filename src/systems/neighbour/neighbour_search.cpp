@@ -31,10 +31,21 @@ std::array<std::array<std::int64_t, D>, kStencil<D>> stencil() {
 
 }  // namespace
 
+namespace {
+
+// Every particle's neighbours, gathered chunk of cells by chunk of cells: row i is
+// buffers[chunk of i's cell][start[i], start[i] + count[i]), in ascending order.
+struct GatheredRows {
+  static constexpr std::size_t kCellsPerChunk = 64;
+  std::vector<std::vector<std::uint32_t>> buffers;
+  std::vector<std::uint32_t> count, start, chunk_of;
+  std::span<std::uint32_t> row(std::size_t i) { return {buffers[chunk_of[i]].data() + start[i], count[i]}; }
+};
+
 template <int D>
-void build_neighbour_list(const Domain<D>& domain, double radius, std::span<const Vec<D>> x,
-                          CellGrid<D>& grid, NeighbourList& out, std::span<const std::int32_t> kind,
-                          std::int32_t skip_kind) {
+void gather_neighbour_rows(const Domain<D>& domain, double radius, std::span<const Vec<D>> x,
+                           CellGrid<D>& grid, std::span<const std::int32_t> kind, std::int32_t skip_kind,
+                           GatheredRows& rows) {
   grid.build(domain, radius, x);
   const std::size_t N = x.size();
   const double r2 = radius * radius;
@@ -45,15 +56,20 @@ void build_neighbour_list(const Domain<D>& domain, double radius, std::span<cons
 
   // Work goes cell by cell: the candidates of the 3^D surrounding cells are gathered once into
   // contiguous arrays (one per axis) and every particle of the cell is tested against them. Each
-  // chunk of cells writes into its own buffer (no atomics); a second pass scatters the lists into
-  // CSR order. The test writes every candidate and advances by the outcome, without a branch:
-  // about one candidate in seven is a neighbour (3D: 103 of 729), at random, and a branch on it
-  // mispredicted often enough to be most of the build.
+  // chunk of cells writes into its own buffer (no atomics); the caller then writes the rows out
+  // in its own form. The test writes every candidate and advances by the outcome, without a
+  // branch: about one candidate in seven is a neighbour (3D: 103 of 729), at random, and a
+  // branch on it mispredicted often enough to be most of the build.
   const std::size_t ncell = grid.cell_count();
-  constexpr std::size_t kCellsPerChunk = 64;
+  constexpr std::size_t kCellsPerChunk = GatheredRows::kCellsPerChunk;
   const std::size_t nchunks = (ncell + kCellsPerChunk - 1) / kCellsPerChunk;
-  std::vector<std::vector<std::uint32_t>> buffers(nchunks);
-  std::vector<std::uint32_t> count(N), start(N);
+  auto& buffers = rows.buffers;
+  buffers.assign(nchunks, {});
+  auto& count = rows.count;
+  auto& start = rows.start;
+  count.resize(N);
+  start.resize(N);
+  rows.chunk_of.resize(N);
 
   // One stencil cell's run of candidates and the bounding box of their positions.
   struct Segment {
@@ -181,24 +197,49 @@ void build_neighbour_list(const Domain<D>& domain, double radius, std::span<cons
   else
     with_skipping(std::false_type{});
 
-  out.offsets.assign(N + 1, 0);
-  out.ends.clear();  // packed
-  for (std::size_t i = 0; i < N; ++i) out.offsets[i + 1] = out.offsets[i] + count[i];
-  out.indices.resize(out.offsets[N]);
-  // Scatter: the chunk a particle belongs to follows from its cell.
+  // Ascending order within a list: deterministic, and gathers walk memory forwards. With the
+  // particles in cell order the candidates come out ascending already (stencil cells are
+  // visited in increasing cell index); only lists that are not need the sort.
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, N, 4096), [&](auto r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      const auto& buf = buffers[grid.cell_of(i) / kCellsPerChunk];
-      std::copy_n(buf.begin() + start[i], count[i], out.indices.begin() + out.offsets[i]);
-      // Ascending order within a list: deterministic, and gathers walk memory forwards. With the
-      // particles in cell order the candidates come out ascending already (stencil cells are
-      // visited in increasing cell index); only lists that are not need the sort.
-      auto first = out.indices.begin() + out.offsets[i], last = out.indices.begin() + out.offsets[i + 1];
-      if (!std::is_sorted(first, last)) std::sort(first, last);
+      rows.chunk_of[i] = static_cast<std::uint32_t>(grid.cell_of(i) / kCellsPerChunk);
+      auto row = rows.row(i);
+      if (!std::is_sorted(row.begin(), row.end())) std::sort(row.begin(), row.end());
+    }
+  });
+}
+
+}  // namespace
+
+template <int D>
+void build_neighbour_list(const Domain<D>& domain, double radius, std::span<const Vec<D>> x,
+                          CellGrid<D>& grid, NeighbourList& out, std::span<const std::int32_t> kind,
+                          std::int32_t skip_kind) {
+  GatheredRows rows;
+  gather_neighbour_rows<D>(domain, radius, x, grid, kind, skip_kind, rows);
+  const std::size_t N = x.size();
+  out.offsets.assign(N + 1, 0);
+  out.ends.clear();  // packed
+  for (std::size_t i = 0; i < N; ++i) out.offsets[i + 1] = out.offsets[i] + rows.count[i];
+  out.indices.resize(out.offsets[N]);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, N, 4096), [&](auto r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      auto row = rows.row(i);
+      std::copy(row.begin(), row.end(), out.indices.begin() + out.offsets[i]);
     }
   });
   out.radius = radius;
   ++out.builds;
+}
+
+template <int D>
+void build_candidate_list(const Domain<D>& domain, double radius, std::span<const Vec<D>> x,
+                          CellGrid<D>& grid, CandidateList& out, std::span<const std::int32_t> kind,
+                          std::int32_t skip_kind) {
+  GatheredRows rows;
+  gather_neighbour_rows<D>(domain, radius, x, grid, kind, skip_kind, rows);
+  out.assign(x.size(), [&](std::size_t i) { return std::span<const std::uint32_t>(rows.row(i)); });
+  out.radius = radius;
 }
 
 template <int D>
@@ -313,6 +354,10 @@ template void filter_candidates<2>(const Domain<2>&, double, std::span<const Vec
                                    NeighbourList&, double&);
 template void filter_candidates<3>(const Domain<3>&, double, std::span<const Vec<3>>, const CandidateList&,
                                    NeighbourList&, double&);
+template void build_candidate_list<2>(const Domain<2>&, double, std::span<const Vec<2>>, CellGrid<2>&,
+                                      CandidateList&, std::span<const std::int32_t>, std::int32_t);
+template void build_candidate_list<3>(const Domain<3>&, double, std::span<const Vec<3>>, CellGrid<3>&,
+                                      CandidateList&, std::span<const std::int32_t>, std::int32_t);
 template void build_neighbour_list<2>(const Domain<2>&, double, std::span<const Vec<2>>, CellGrid<2>&,
                                       NeighbourList&, std::span<const std::int32_t>, std::int32_t);
 template void build_neighbour_list<3>(const Domain<3>&, double, std::span<const Vec<3>>, CellGrid<3>&,

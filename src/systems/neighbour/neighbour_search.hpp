@@ -24,6 +24,13 @@ void build_neighbour_list(const Domain<D>& domain, double radius, std::span<cons
                           CellGrid<D>& grid, NeighbourList& out, std::span<const std::int32_t> kind = {},
                           std::int32_t skip_kind = -1);
 
+// The same pairs (radius + a Verlet skin) kept as compact candidates (candidate_list.hpp),
+// encoded straight from the build's own buffers, without the full list in between.
+template <int D>
+void build_candidate_list(const Domain<D>& domain, double radius, std::span<const Vec<D>> x,
+                          CellGrid<D>& grid, CandidateList& out, std::span<const std::int32_t> kind = {},
+                          std::int32_t skip_kind = -1);
+
 // `out` = the pairs of `candidates` (a list built with a larger radius) within `radius`, in the
 // same order: row for row the list that build_neighbour_list gives for `radius`, at a fraction
 // of its cost. `out` has NeighbourList::ends and the candidates' slots (filter_rows.hpp).
@@ -132,13 +139,9 @@ class NeighbourSearch final : public System<D> {
   }
 
  private:
-  // The candidates are built as a full list and kept in two bytes each (candidate_list.hpp);
-  // the full list is freed at once, so only the build itself holds both.
   void build_candidates(const Domain<D>& domain, std::span<const Vec<D>> x, CellGrid<D>& grid,
                         std::span<const std::int32_t> kind) {
-    NeighbourList built;
-    build_neighbour_list<D>(domain, radius_ + skin_, x, grid, built, kind, skip_kind_);
-    candidates_.assign(built);
+    build_candidate_list<D>(domain, radius_ + skin_, x, grid, candidates_, kind, skip_kind_);
     ++builds_;
   }
 
