@@ -59,7 +59,7 @@ test-sanitize: deps
 
 bench: build py-deps
 	@# issue 13's goals in one sitting and one table (the triad, tools/bench_speedup.sh and
-	@# tools/bench_time_per_unit_T.sh among them); about 25 minutes and 16 GB
+	@# tools/bench_time_per_unit_T.sh among them); about 20 minutes and 16 GiB
 	/usr/bin/python3 tools/bench_issue13.py --build $(BUILD)
 	$(BUILD)/bench/ryushi_bench_neighbours
 	tools/bench_dam_break.sh $(BUILD)

@@ -4,8 +4,8 @@ is a ratio, and one table at the end: goal, what is measured, before, after, rat
 
 The old binary is ryushi at 15b7305, the commit before the speed work, built into build-base/ by
 tools/bench_speedup.sh (which this runs first). Each measurement is the tool the docs cite for
-it; their full output goes to stdout as they run, the table last. About 25 minutes on the
-2-core development machine, 16 GB of memory for the 10M-particle run (goal 4).
+it; their full output goes to stdout as they run, the table last. About 20 minutes on the
+2-core development machine, 16 GiB of memory for the 10M-particle run (goal 4).
 
 Usage: /usr/bin/python3 tools/bench_issue13.py [--build build] [--skip goal,...]
 """
