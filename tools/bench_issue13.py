@@ -46,6 +46,8 @@ def main():
     a = ap.parse_args()
     skip = set(filter(None, a.skip.split(",")))
     new = f"{a.build}/ryushi"
+    if "1" in skip and not Path(OLD).exists():
+        sys.exit(f"bench_issue13: {OLD} is built by goal 1 (tools/bench_speedup.sh): run it without --skip 1 first")
     rows = []  # (goal, measure, before, after, ratio, target)
 
     # Goal 1 (and the old binary's build): 2D WCSPH at 267,777 particles, 40 steps, 3 repeats.
