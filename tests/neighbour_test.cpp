@@ -229,7 +229,7 @@ TEST_CASE("neighbours: the compact candidates give back every index, large jumps
     list.offsets.push_back(static_cast<std::uint32_t>(list.indices.size()));
   }
   CandidateList compact;
-  compact.assign(list);
+  compact.assign(N, [&](std::size_t i) { return list.of(i); });
   REQUIRE(compact.size() == N);
   CHECK(compact.count == list.indices.size());
   bool same = true;
@@ -244,6 +244,6 @@ TEST_CASE("neighbours: the compact candidates give back every index, large jumps
   NeighbourList runs;
   runs.offsets = {0, 1000};
   for (std::uint32_t j = 1; j <= 1000; ++j) runs.indices.push_back(j);
-  compact.assign(runs);
+  compact.assign(1, [&](std::size_t i) { return runs.of(i); });
   CHECK(compact.slots.size() == 1000);
 }

@@ -11,8 +11,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "systems/neighbour/neighbour_list.hpp"
-
 namespace ryushi {
 
 struct CandidateList {
@@ -88,10 +86,6 @@ struct CandidateList {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, N, 4096), [&](auto r) {
       for (std::size_t i = r.begin(); i != r.end(); ++i) slots_of(i, slots.data() + offsets[i]);
     });
-  }
-  void assign(const NeighbourList& list) {
-    assign(list.size(), [&](std::size_t i) { return list.of(i); });
-    radius = list.radius;
   }
 };
 
