@@ -50,20 +50,28 @@ Ritter ritter(double spacing, bool splitting) {
 }  // namespace
 
 TEST_CASE("swe: Ritter's dam break with splitting resolves the front better than without, and converges") {
-  // The paper's case (d = 0.1 m) and one finer. The issue's bound (front-region depth error
-  // within 3% with splitting) is not met: measured 0.29 and 0.13 (docs/swe.md); asserted is what
-  // the paper's comparison claims and this method achieves: with splitting the front-region
-  // error is smaller (at d = 0.05 less than half of the unsplit one), the front is ahead of the
-  // unsplit one and closer to the analytic front, and it moves towards the analytic front as the
-  // spacing halves; the unsplit front stays behind (its particles drift apart, and the SPH depth
-  // of eq. 7 cannot thin with them).
+  // The paper's case (d = 0.1 m) and one finer, with the scene's momentum = "sph". The issue's
+  // bound (front-region depth error within 3% with splitting) is below what eq. 7 allows: the
+  // exact solution itself, its particles placed where it moves them, ideally split at 1.5 A0 and
+  // their depths summed by eqs. 7-9, has a front-region error of 0.055 at d = 0.1 and 0.049 at
+  // d = 0.05 (0.049 at 0.025: it does not fall with the spacing), and 0.77 / 0.59 unsplit
+  // (tools/ritter_floor.py; docs/swe.md, "Ritter"). Asserted instead, against that floor:
+  //  - with splitting the front-region error is within 3x the floor (measured 0.153 = 2.8x at
+  //    d = 0.1, 0.098 = 2.0x at 0.05; momentum = "mps": 0.289 = 5.3x and 0.130 = 2.7x);
+  //  - without splitting it is more than twice that (measured 0.634, 0.540: the paper's "71%");
+  //  - the front with splitting is ahead of the unsplit one and closer to the analytic front,
+  //    and moves towards it as the spacing halves; the unsplit front stays behind (its particles
+  //    drift apart, and the SPH depth of eq. 7 cannot thin with them).
+  const double floor_coarse = 0.055, floor_fine = 0.049;  // tools/ritter_floor.py --spacing 0.1 0.05
   const Ritter split_coarse = ritter(0.1, true), plain_coarse = ritter(0.1, false);
   const Ritter split_fine = ritter(0.05, true), plain_fine = ritter(0.05, false);
   for (auto* r : {&split_coarse, &plain_coarse, &split_fine, &plain_fine})
     MESSAGE("front-region error " << r->front_error << ", wave " << r->wave_error << ", front " << r->front
                                   << " m (analytic " << r->analytic_front << " m), splits " << r->splits);
-  CHECK(split_coarse.front_error < plain_coarse.front_error);
-  CHECK(split_fine.front_error < 0.5 * plain_fine.front_error);
+  CHECK(split_coarse.front_error < 3 * floor_coarse);
+  CHECK(split_fine.front_error < 3 * floor_fine);
+  CHECK(plain_coarse.front_error > 2 * split_coarse.front_error);
+  CHECK(plain_fine.front_error > 2 * split_fine.front_error);
   for (auto [split, plain] : {std::pair{split_coarse, plain_coarse}, std::pair{split_fine, plain_fine}}) {
     CHECK(split.splits > 0);
     CHECK(split.front > plain.front);
@@ -72,7 +80,7 @@ TEST_CASE("swe: Ritter's dam break with splitting resolves the front better than
     // Splitting halves volumes exactly, and nothing else changes them.
     CHECK(std::abs(split.volume_change) < 1e-12);
   }
-  CHECK(split_fine.front > split_coarse.front + 0.1);  // 5.18 -> 5.47 m (analytic 6.22)
+  CHECK(split_fine.front > split_coarse.front + 0.1);  // 5.40 -> 5.68 m (analytic 6.22)
 }
 
 TEST_CASE("swe: a lake at rest over a bumpy bed stays at rest for 10 s (well balanced)") {
@@ -181,4 +189,7 @@ TEST_CASE("swe: bad rasters and scene keys are exit code 2 with the file and lin
               "[method]\nname = \"swe\"\n[physics]\ngravity = [0.0, -9.81]\n[[fluid]]\nmin = [0.0, 0.0]\nmax "
               "= [1.0, 1.0]\ndepth = 0.1\n",
           "method 'swe' has no in-plane gravity");
+  bad_key(base + "[method]\nname = \"swe\"\n[swe]\nmomentum = \"sp\"\n[[fluid]]\nmin = [0.0, 0.0]\nmax = [1.0, "
+                 "1.0]\ndepth = 0.1\n",
+          "keys.toml:13:12: 'momentum' in [swe] is 'sp'; allowed: mps, sph");
 }

@@ -29,6 +29,7 @@ SweParameters swe_parameters(const Scene& s) {
   p.area0 = s.spacing * s.spacing;
   p.slip = s.swe.slip;
   p.edge_correction = s.swe.edge_correction;
+  p.momentum = s.swe.momentum == "sph" ? SweParameters::Momentum::Sph : SweParameters::Momentum::Mps;
   p.bed = s.swe.bed;
   // Each closed axis of a [[wall]] box gives two mirror lines, spanning the box.
   for (auto& w : s.walls)

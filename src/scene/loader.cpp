@@ -335,6 +335,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     w.manning = *get("swe", "manning").value<double>();
     w.slip = *get("swe", "walls").value<std::string>() == "slip";
     w.edge_correction = *get("swe", "edge_correction").value<bool>();
+    w.momentum = *get("swe", "momentum").value<std::string>();
     if (root["swe"]["ritter_dam_x"] || root["swe"]["ritter_depth"]) {
       if (!root["swe"]["ritter_dam_x"] || !root["swe"]["ritter_depth"])
         val.fail(root["swe"].node(), "swe.ritter_dam_x", "[swe] ritter_dam_x and ritter_depth go together");

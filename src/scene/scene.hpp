@@ -145,6 +145,7 @@ struct SolverSpec {
 struct SweSpec {
   double gravity = 9.81, manning = 0, influence_ratio = 1.3;
   bool slip = true, edge_correction = true;
+  std::string momentum = "mps";
   // Ritter dry-bed dam-break reference (summary.json metrics); NaN: none.
   double ritter_dam_x = std::numeric_limits<double>::quiet_NaN(), ritter_depth = 0;
   bool splitting = true, split_along_gap = true;

@@ -37,7 +37,10 @@ struct SweParameters {
   double rho0 = 1000;       // water density (mass = rho0 V, pressure = rho0 g h)
   double area0 = 0;         // A0 = d^2, the initial particle area
   double dry_depth = 1e-6;  // friction's hydraulic radius is at least this (m)
-  bool edge_correction = true;
+  bool edge_correction = true;  // momentum = mps only
+  // The pressure term of the momentum equation (docs/swe.md, "Momentum"): mps, eq. 6's gradient of
+  // the surface with the faded dry-side term; sph, the gradient of the depth sum of eq. 7 itself.
+  enum class Momentum { Mps, Sph } momentum = Momentum::Mps;
   bool slip = true;  // wall ghosts: tangential velocity kept (slip) or reversed (no-slip)
   std::vector<MirrorWall> walls;
   std::shared_ptr<const Bed> bed;

@@ -91,11 +91,21 @@ class SweDepth final : public System<D> {
   SweParameters p_;
 };
 
-// The MPS gradient with area ratios (eqs. 5-6) of the free surface, and Manning friction
-// (eq. 3) kept for the integrator: acceleration = -g <grad z_s>_i,
-//   n_i = sum_{j != i} (A_j / A_i) w_ij,
-//   <grad z_s>_i = D / n_i sum_{j != i} (z_s,j - z_s,i) x_ij / |x_ij|^2 (A_j / A_i) w_ij.
-// On a flat surface every difference is zero, whatever the bed: the lake stays at rest.
+// The pressure term of the momentum equation, Du/Dt = -g grad z_s (eq. 2), in one of two forms
+// (SweParameters::momentum; Manning friction is the integrator's):
+//  mps (the paper's): the MPS gradient with area ratios (eqs. 5-6) of the free surface,
+//    n_i = sum_{j != i} (A_j / A_i) w_ij,
+//    <grad z_s>_i = D / n_i sum_{j != i} (z_s,j - z_s,i) x_ij / |x_ij|^2 (A_j / A_i) w_ij,
+//  plus the dry side of a wet/dry edge (below). On a flat surface every difference is zero,
+//  whatever the bed: the lake stays at rest.
+//  sph: the gradient of the depth sum of eq. 7 itself. On a flat bed grad h_i = sum_j V_j grad_i
+//  w_ij (the self term has no gradient), and with V_j = A_j h_j that is exactly
+//    sum_j A_j (z_s,j - z_s,i) grad_i w_ij + h_i sum_j A_j grad_i w_ij,
+//  the form used here so that a bed enters through z_s. Force V_i a_i on a flat bed is
+//  -g V_i V_j grad_i w_ij per pair, antisymmetric: momentum is conserved pair by pair, and the
+//  second sum (zero inside a regular lattice, large where the neighbourhood is cut off) is what
+//  pushes a front onto the dry bed. A lattice over relief is not its equilibrium (the second
+//  sum is not zero where the areas vary), so this form is not well balanced (docs/swe.md).
 template <int D>
 class SweAcceleration final : public System<D> {
  public:
@@ -116,20 +126,35 @@ class SweAcceleration final : public System<D> {
     auto zs = ctx.read(components::surface_elevation);
     auto acc = ctx.write(components::acceleration);
     auto h = ctx.read(components::depth);
+    const bool sph = p_.momentum == SweParameters::Momentum::Sph;
     for_each_particle(x.size(), [&](std::size_t i) {
       double n = 0, shepard = A[i] * w.w(0.0);
-      Vec<D> grad = Vec<D>::Zero(), shepard_gradient = Vec<D>::Zero();
+      // grad: eq. 6's sum (mps) or sum_j A_j (z_s,j - z_s,i) grad_i w_ij (sph);
+      // area_gradient (sph): sum_j A_j grad_i w_ij, kernel_gradient (mps): sum_j grad_i w_ij, with
+      // grad_i w_ij = (x_i - x_j) (dw/dr) / r.
+      Vec<D> grad = Vec<D>::Zero(), area_gradient = Vec<D>::Zero(), kernel_gradient = Vec<D>::Zero();
       for (auto j : nl.of(i)) {
         const std::uint32_t o = g.owner(j);
         const Vec<D> r = g.position[j] - x[i];
         const double r2 = r.squaredNorm();
         if (r2 == 0) continue;  // two particles on one spot: no direction
         const double rij = std::sqrt(r2);
-        const double weight = A[o] / A[i] * w.w(rij);
+        const Vec<D> grad_w = -w.grad_factor(rij) * r;
+        if (sph) {
+          grad += A[o] * (zs[o] - zs[i]) * grad_w;
+          area_gradient += A[o] * grad_w;
+          continue;
+        }
+        kernel_gradient += grad_w;
+        const double wij = w.w(rij);
+        const double weight = A[o] / A[i] * wij;
         n += weight;
         grad += (zs[o] - zs[i]) / r2 * weight * r;
-        shepard += A[o] * w.w(rij);
-        shepard_gradient -= w.grad_factor(rij) * r;  // grad_i w_ij = (x_i - x_j) (dw/dr) / r
+        shepard += A[o] * wij;
+      }
+      if (sph) {
+        acc[i] = -p_.g * (grad + h[i] * area_gradient);
+        return;
       }
       Vec<D> a = n > 0 ? Vec<D>(-p_.g * D / n * grad) : Vec<D>::Zero();
       // The dry side of a wet/dry edge (docs/swe.md): -g h_i A_i sum_j grad_i w_ij, where the
@@ -137,7 +162,7 @@ class SweAcceleration final : public System<D> {
       // fully below s = 0.90, fading to nothing at 0.99. Applied everywhere (no fade), the term
       // makes a lake at rest unstable: its round-off grows to 0.15 m/s within 10 s at any CFL.
       const double edge = std::clamp((0.99 - shepard) / 0.09, 0.0, 1.0);
-      if (p_.edge_correction && edge > 0) a -= edge * p_.g * h[i] * A[i] * shepard_gradient;
+      if (p_.edge_correction && edge > 0) a -= edge * p_.g * h[i] * A[i] * kernel_gradient;
       acc[i] = a;
     });
   }
