@@ -47,7 +47,8 @@ STUDIES = [
      "pressure_error"),
     ("hydrostatic_isph", "hydrostatic_isph_2d.toml", ["particles.spacing=0.025,0.0125,0.00625"], ["time.end=0.5"],
      "pressure_error"),
-    ("swe_splitting", "dam_break_ritter_swe.toml", ["splitting.enabled=false,true", "particles.spacing=0.1,0.05,0.025"],
+    ("swe_splitting", "dam_break_ritter_swe.toml",
+     ["swe.momentum=mps,sph", "splitting.enabled=false,true", "particles.spacing=0.1,0.05,0.025"],
      [], "ritter_error"),
 ]
 
@@ -310,7 +311,7 @@ def main():
         w(f"**{flow}**\n")
         w("\n".join(lines) + "\n")
 
-    w("## Shallow water: particle splitting x resolution on Ritter's dam break\n")
+    w("## Shallow water: momentum form x particle splitting x resolution on Ritter's dam break\n")
     w("Method swe, h0 = 0.25 m released onto a dry bed, to t = 0.5 s; ritter_error is sum |h - h_Ritter| / "
       "sum h_Ritter over the particles downstream of the dam (docs/swe.md), ritter_error_front the front's lag "
       "behind 2 sqrt(g h0) t relative to that run.\n")
