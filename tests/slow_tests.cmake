@@ -13,6 +13,8 @@ set_tests_properties(
   "isph: dam break front meets the criterion at a/d = 20 and 40 and runs through the impact to t = 2 s"
   PROPERTIES LABELS slow COST 14)
 set_tests_properties("isph: a resting tank keeps rho g depth and stays still" PROPERTIES LABELS slow COST 27)
+set_tests_properties("isph: a resting 3D tank stays at rest for 3 s (its vertical edges stay dry above the water)"
+                     PROPERTIES LABELS slow COST 40)
 set_tests_properties("mps: 3D dam break front meets the criterion and stays in its tank through the impact"
                      PROPERTIES LABELS slow COST 8)
 set_tests_properties("mps: dam break runs past the far-wall impact and keeps its number density" PROPERTIES LABELS slow COST 16)
