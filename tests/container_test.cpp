@@ -148,17 +148,28 @@ TEST_CASE("container: water at rest in a round tank keeps rho g depth on average
 // on the tank over t = 1-2 s rho g pi R^2 / 2 to 0.005% (the 612 particles hold 2.6% less than
 // the half disc's area, the pressure integral over the wall sees the whole). Bounds: 0.5% (the
 // ISPH tank at rest in isph_test.cpp is asserted to 0.5% too), 1% on the force.
-TEST_CASE("container: water at rest in a round tank keeps rho g depth (ISPH, a ring wall)") {
-  auto dir = test::unique_scratch("container_round_isph");
-  test::write_text(dir / "tank.toml", test::read_text(test::scene_path("round_tank_2d.toml")) +
-                                          "\n[[probe]]\nname = \"fy\"\ntype = \"force\"\nsolid = \"tank\"\naxis = 1\n");
-  const auto out = dir / "out";
+namespace {
+// scenes/round_tank_2d.toml under ISPH with one more probe; returns the run's folder.
+std::filesystem::path run_round_tank_isph(const std::string& name, const std::string& probe,
+                                          std::vector<std::string> sets) {
+  auto dir = test::unique_scratch(name);
+  test::write_text(dir / "tank.toml",
+                   test::read_text(test::scene_path("round_tank_2d.toml")) + "\n[[probe]]\n" + probe);
   RunOptions opt;
   opt.scene = (dir / "tank.toml").string();
-  opt.out_dir = out.string();
+  opt.out_dir = (dir / "out").string();
   opt.quiet = true;
-  opt.sets = {"time.end=2", "method.name=isph", "output.probe_interval=0.01"};
+  opt.sets = std::move(sets);
+  opt.sets.push_back("method.name=isph");
   REQUIRE(run_scene(opt) == kExitDone);
+  return dir / "out";
+}
+}  // namespace
+
+TEST_CASE("container: water at rest in a round tank keeps rho g depth (ISPH, a ring wall)") {
+  const auto out = run_round_tank_isph("container_round_isph",
+                                       "name = \"fy\"\ntype = \"force\"\nsolid = \"tank\"\naxis = 1\n",
+                                       {"time.end=2", "output.probe_interval=0.01"});
   auto summary = test::read_text(out / "summary.json");
   CHECK(test::json_number(summary, "hydrostatic") < 0.005);
   auto probes = test::read_csv(out / "probes.csv");
@@ -171,6 +182,25 @@ TEST_CASE("container: water at rest in a round tank keeps rho g depth (ISPH, a r
     if (probes["time"][k] >= 1.0) force += probes["fy"][k], ++samples;
   REQUIRE(samples >= 90);
   CHECK(std::abs(-force / samples / (rho_g * kPi * 0.5 * 0.5 / 2) - 1) < 0.01);
+}
+
+// The same tank over a longer time does not stay at rest: its kinetic energy grows about tenfold
+// per second (3.5e-4 J/m at t = 1 s, 0.033 at 3 s) from particles beside the ring below the
+// surface, where the cut lattice leaves gaps of 0.75-1.75 d to the wall, and the run stops at
+// t = 4-5 s (exit 3, the step below time.dt_min). At R / d = 40 it grows from t = 0.1 s and the
+// solve fails at 0.8 s; a smaller step (cfl 0.05) fails sooner (1.7 s), as do no shifting (1.6
+// s) and the compression term (2.0 s); docs/geometry.md lists what was tried. A box tank holds
+// 1.5e-6 J/m to t = 6 s. Marked should_fail: it turns red when the round wall is fixed (then
+// assert the rest, and let 3D round containers in under isph).
+TEST_CASE("container: water in a round tank stays at rest to t = 5 s (ISPH, a ring wall; known to fail)" *
+          doctest::should_fail()) {
+  const auto out =
+      run_round_tank_isph("container_round_isph_long", "name = \"ke\"\ntype = \"kinetic_energy\"\n",
+                          {"time.end=5", "output.interval=1"});
+  // At rest: the kinetic energy no more than 1e-3 J/m (rms speed 1.6 mm/s over the 390 kg/m of
+  // water; the box tank: 1.5e-6 J/m).
+  auto probes = test::read_csv(out / "probes.csv");
+  CHECK(probes["ke"].back() < 1e-3);
 }
 
 TEST_CASE("container: bad containers are bad input naming the solid and the problem") {
