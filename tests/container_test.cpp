@@ -187,10 +187,10 @@ TEST_CASE("container: water at rest in a round tank keeps rho g depth (ISPH, a r
 // The same tank over a longer time does not stay at rest: its kinetic energy grows about tenfold
 // per second (3.5e-4 J/m at t = 1 s, 0.033 at 3 s) from particles beside the ring below the
 // surface, where the cut lattice leaves gaps of 0.75-1.75 d to the wall, and the run stops at
-// t = 4-5 s (exit 3, the step below time.dt_min). At R / d = 40 it grows from t = 0.1 s and the
-// solve fails at 0.8 s; a smaller step (cfl 0.05) fails sooner (1.7 s), as do no shifting (1.6
-// s) and the compression term (2.0 s); docs/geometry.md lists what was tried. A box tank holds
-// 1.5e-6 J/m to t = 6 s. Marked should_fail: it turns red when the round wall is fixed (then
+// t = 4.0-4.1 s (exit 3, the step below time.dt_min). At R / d = 40 it grows from t = 0.1 s and
+// the solve fails at 0.8 s; a smaller step (cfl 0.05) fails sooner (1.7 s), as do no shifting
+// (1.6 s) and the compression term (2.0 s); docs/isph.md ("Open") lists what was tried and why. A
+// box tank holds 1.5e-6 J/m to t = 6 s. Marked should_fail: it turns red when the round wall is fixed (then
 // assert the rest, and let 3D round containers in under isph).
 TEST_CASE("container: water in a round tank stays at rest to t = 5 s (ISPH, a ring wall; known to fail)" *
           doctest::should_fail()) {
