@@ -192,7 +192,7 @@ TEST_CASE("container: water at rest in a round tank keeps rho g depth (ISPH, a r
 // (1.6 s) and the compression term (2.0 s); docs/isph.md ("Open") lists what was tried and why. A
 // box tank holds 1.5e-6 J/m to t = 6 s. Marked should_fail: it turns red when the round wall is fixed (then
 // assert the rest, and let 3D round containers in under isph).
-TEST_CASE("container: water in a round tank stays at rest to t = 5 s (ISPH, a ring wall; known to fail)" *
+TEST_CASE("container: water in a round tank stays at rest to t = 5 s (ISPH, a ring wall, known to fail)" *
           doctest::should_fail()) {
   const auto out =
       run_round_tank_isph("container_round_isph_long", "name = \"ke\"\ntype = \"kinetic_energy\"\n",

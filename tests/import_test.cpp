@@ -120,7 +120,7 @@ TEST_CASE("import: a CSV of positions with optional velocity and pressure, and b
 // R + d/2), and before 2026-11-26 the test refused any particle within half a spacing of the
 // surface, so neither method could restart its own round tank. A particle inside a body, or
 // outside a container, is still bad input.
-TEST_CASE("import: a round tank restarts from its own frame; a particle in a solid is bad input") {
+TEST_CASE("import: a round tank restarts from its own frame, and a particle in a solid is bad input") {
   auto dir = test::unique_scratch("import_round");
   std::filesystem::create_directories(dir);
   const std::string scene = test::read_text(test::scene_path("round_tank_2d.toml"));

@@ -79,5 +79,5 @@ set_tests_properties("elastic: seed 002's updated form keeps a block on a wall a
                      PROPERTIES LABELS slow COST 15)
 set_tests_properties("solid: an ISPH piston wave maker makes the waves of linear wave-maker theory at h/d = 20"
                      PROPERTIES LABELS slow COST 100)
-set_tests_properties("container: water in a round tank stays at rest to t = 5 s (ISPH, a ring wall; known to fail)"
+set_tests_properties("container: water in a round tank stays at rest to t = 5 s (ISPH, a ring wall, known to fail)"
                      PROPERTIES LABELS slow COST 10)
