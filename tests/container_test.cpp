@@ -13,6 +13,7 @@
 #include "geometry/solid_shape.hpp"
 #include "h5_read.hpp"
 #include "scene_error.hpp"
+#include "shipped_scene_run.hpp"
 #include "test_util.hpp"
 
 using namespace ryushi;
@@ -152,17 +153,8 @@ namespace {
 // scenes/round_tank_2d.toml under ISPH with one more probe; returns the run's folder.
 std::filesystem::path run_round_tank_isph(const std::string& name, const std::string& probe,
                                           std::vector<std::string> sets) {
-  auto dir = test::unique_scratch(name);
-  test::write_text(dir / "tank.toml",
-                   test::read_text(test::scene_path("round_tank_2d.toml")) + "\n[[probe]]\n" + probe);
-  RunOptions opt;
-  opt.scene = (dir / "tank.toml").string();
-  opt.out_dir = (dir / "out").string();
-  opt.quiet = true;
-  opt.sets = std::move(sets);
-  opt.sets.push_back("method.name=isph");
-  REQUIRE(run_scene(opt) == kExitDone);
-  return dir / "out";
+  sets.push_back("method.name=isph");
+  return test::run_shipped_scene(name, "round_tank_2d.toml", "[[probe]]\n" + probe, std::move(sets));
 }
 }  // namespace
 

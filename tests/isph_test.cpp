@@ -13,6 +13,7 @@
 #include "app/exit_codes.hpp"
 #include "app/run.hpp"
 #include "h5_read.hpp"
+#include "shipped_scene_run.hpp"
 #include "systems/shifting/density_shifting.hpp"
 #include "test_util.hpp"
 
@@ -281,16 +282,10 @@ TEST_CASE("isph: a resting 3D tank keeps rho g depth") {
 // "Open": a slower growth from 4 s is not resolved). Bound: 1e-4 J, a speed of 5 mm/s over the
 // 8 kg, five times the start-up level that the run settles to.
 TEST_CASE("isph: a resting 3D tank stays at rest for 3 s (its vertical edges stay dry above the water)") {
-  auto dir = test::unique_scratch("isph_hydrostatic_3d_long");
-  test::write_text(dir / "tank.toml", test::read_text(test::scene_path("hydrostatic_isph_3d.toml")) +
-                                          "\n[[probe]]\nname = \"ke\"\ntype = \"kinetic_energy\"\n");
-  RunOptions opt;
-  opt.scene = (dir / "tank.toml").string();
-  opt.out_dir = (dir / "out").string();
-  opt.quiet = true;
-  opt.sets = {"time.end=3.0", "output.interval=0.5"};
-  REQUIRE(run_scene(opt) == kExitDone);
-  auto probes = test::read_csv(dir / "out" / "probes.csv");
+  const auto out = test::run_shipped_scene("isph_hydrostatic_3d_long", "hydrostatic_isph_3d.toml",
+                                           "[[probe]]\nname = \"ke\"\ntype = \"kinetic_energy\"\n",
+                                           {"time.end=3.0", "output.interval=0.5"});
+  auto probes = test::read_csv(out / "probes.csv");
   double largest = 0;
   for (double e : probes["ke"]) largest = std::max(largest, e);
   MESSAGE("3D tank at rest: largest kinetic energy to t = 3 s: ", largest, " J");
