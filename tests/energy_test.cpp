@@ -16,11 +16,13 @@
 //   - the wave survives: after two periods the left-right height difference is at least half the
 //     initial 0.2 m. The physical damping (wall boundary layers, nu = 1e-6) takes less than 1%
 //     over two periods, so what goes is numerical; WCSPH measured 67% left.
-// MPS and ISPH fail this today (docs/validation.md "Energy"): MPS gains 16 J (69% of A) by
-// t = 0.9 s, the surface layer spreading upwards (its repulsive gradient, (p_j - p_min), and the
-// free-surface rows at p = 0), and its kinetic energy never returns below 8 J; the ISPH paper
-// set-up gains 29 J and stops at t = 1.6 s (BiCGSTAB does not converge). Their cases are marked
-// should_fail: they pass while the defect is there and turn red, to be flipped, once it is fixed.
+// MPS and the ISPH paper set-up fail this today (docs/validation.md "Energy"). MPS at its own
+// influence radius r_e = 3.1 l0: E rises 4.1 J (18% of A) above E(0) in the first quarter period,
+// then falls (-6.8 J by 2.4 s), and only 0.089 m of the wave is left after two periods. (Until
+// 2026-11-26 the scene fixed smoothing_ratio = 1.5, which gave MPS r_e = 1.5 l0, a neighbourhood
+// of the four nearest particles: it gained 16 J, 69% of A.) The ISPH paper set-up gains 320 J and
+// stops at t = 1.3 s. Their cases are marked should_fail: they pass while the defect is there and
+// turn red, to be flipped, once it is fixed.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -92,15 +94,15 @@ TEST_CASE(
   check_sloshing_energy("wcsph", {"method.integrator=midpoint"});
 }
 
-TEST_CASE("energy: an MPS sloshing tank never gains energy (known to fail: MPS gains 69% of it)" *
+TEST_CASE("energy: an MPS sloshing tank never gains energy (known to fail: MPS gains 18% of it, the wave decays)" *
           doctest::should_fail()) {
   check_sloshing_energy("mps");
 }
 
-// ISPH with the violent-flow set-up of scenes/dam_break_isph_2d.toml passes: E - E(0) between
-// -22.8 and +0.23 J/m (the loss is mostly the column settling by about 0.4 d, within the 1.05 A
-// bound by 6%; with compression_relaxation 0.05 it lost 77 J), period 1.220 s (3.3% long), 0.161 m
-// left after two periods.
+// ISPH with the violent-flow set-up of scenes/dam_break_isph_2d.toml (and its h = 1.2 d) passes:
+// E - E(0) between -15.6 and +0.46 J/m (the loss is mostly the column settling), period 1.231 s
+// (4.1% long), 0.141 m left after two periods. (At h = 1.5 d, the scene's until 2026-11-26:
+// -22.8 .. +0.23 J/m, 1.220 s, 0.161 m; with compression_relaxation 0.05 it lost 77 J.)
 TEST_CASE("energy: an ISPH sloshing tank with the violent-flow set-up never gains energy and keeps the period") {
   check_sloshing_energy("isph", {"method.wall_rows=\"shepard\"", "method.ppe_laplacian=\"standard\"",
                                  "method.pressure_gradient=\"symmetric\"", "method.free_surface_pressure=\"particle\"",

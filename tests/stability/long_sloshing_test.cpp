@@ -6,9 +6,8 @@
 // the flow can only lose. The mechanical energy E = kinetic + potential must not grow: every rise
 // of E above its lowest value so far stays within 5% of A (the allowance of the two-period energy
 // test: the time integration's error and WCSPH's stored compression), over all 200 periods; and
-// the water ends at rest. Run under WCSPH for 200 periods and the ISPH violent-flow set-up (a
-// known failure, shown within 20); MPS gains energy in the first period already
-// (tests/energy_test.cpp, known to fail), so it is not run for 200.
+// the water ends at rest. Run under WCSPH for 200 periods; the ISPH violent-flow set-up and MPS
+// are known failures (neither comes to rest), shown within 20 periods.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -101,4 +100,17 @@ TEST_CASE(
                "method.pressure_gradient=\"symmetric\"", "method.free_surface_pressure=\"particle\"",
                "method.viscous_laplacian=\"standard\"", "solver.tolerance=1e-6",
                "method.compression_relaxation=0.5", "shifting.model=\"fickian\""});
+}
+
+// MPS at its own influence radius (r_e = 3.1 l0) does not gain energy here: over 200 periods (37 s
+// on 2 threads) E never rises above E(0) and does not drift (after the first ten periods it stays
+// 28-32 J/m below E(0)). But it never comes to rest: the number-density source's pressure noise
+// (the jitter of the resting tank, docs/mps.md) keeps 1.3-2.8 J/m of kinetic energy in the water
+// (rms speed about 0.1 m/s) to the end, and E wanders up to 4.8 J/m above its running minimum (the
+// bound is 1.5). 20 periods show both (4.2 J/m, 2.4 J/m left at the end). Marked should_fail.
+TEST_CASE(
+    "stability: an MPS sloshing tank never gains energy and ends at rest (known to fail within 20 periods: "
+    "it keeps moving)" *
+    doctest::should_fail()) {
+  check_long_sloshing("mps", 20, {"method.name=mps"});
 }
