@@ -5,9 +5,18 @@
 // The stair holds A = rho g 0.25 (sum h^2 - 4 H^2) / 2 = 30.7 J/m above the flat surface, which
 // the flow can only lose. The mechanical energy E = kinetic + potential must not grow: every rise
 // of E above its lowest value so far stays within 5% of A (the allowance of the two-period energy
-// test: the time integration's error and WCSPH's stored compression), over all 200 periods; and
-// the water ends at rest. Run under WCSPH for 200 periods; the ISPH violent-flow set-up and MPS
-// are known failures (neither comes to rest), shown within 20 periods.
+// test: the time integration's error and WCSPH's stored compression), over all 200 periods, and
+// E ends below E(0).
+// Not asserted: that the water ends at rest (asserted until 2026-11-26). Physics does not bring it
+// to rest: the mode loses energy in the Stokes layers on the floor and the walls, at the mean rate
+// rho sqrt(nu omega / 8) U0^2 per unit area (U0 the slip velocity of potential flow there: on the
+// floor a omega sin(k x) / sinh(k H), on a wall a omega sinh(k (y + H)) / sinh(k H)), against its
+// energy rho g a^2 L / 4: a decay rate of 3.3e-3 /s for water (nu = 1e-6), so 92% of the mode's
+// energy remains after 20 periods and 46% after 200. A method that ends at rest does so by its
+// own numerical dissipation (WCSPH's wave is gone within 20 periods at this resolution); the
+// kinetic energy at the end is printed.
+// Run under WCSPH for 200 periods; the ISPH violent-flow set-up and MPS are known failures (their
+// energy rises above its running minimum), shown within 20 periods.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -71,9 +80,8 @@ void check_long_sloshing(const std::string& label, int periods, std::vector<std:
           " J/m), E(end) - E(0) = ", e.total.back() - e.total.front(), " J/m");
   CHECK(largest_rise <= 0.05 * kStair);
   CHECK(e.total.back() <= e.total.front());
-  // At rest: the kinetic energy at the end is below 1% of A (at this resolution the wave is gone
-  // within 20 periods: WCSPH measured 0.004 J/m of kinetic energy at t = 23.6 s).
-  CHECK(e.kinetic.back() < 0.01 * kStair);
+  MESSAGE(label, ": kinetic energy at the end ", e.kinetic.back(), " J/m (the mode's viscous decay would leave ",
+          std::exp(-3.3e-3 * periods * kPeriod), " of its energy)");
   CHECK(test::json_number(o.summary, "fluid_particles") == 200);
 }
 
@@ -82,18 +90,19 @@ void check_long_sloshing(const std::string& label, int periods, std::vector<std:
 TEST_CASE("stability: a WCSPH sloshing tank run for 200 periods never gains energy") {
   check_long_sloshing("wcsph", 200, {});
 }
-// ISPH with the violent-flow set-up passes the two-period energy test at d = 0.025 m (+0.23 J/m at
-// most), but at this resolution it never comes to rest: from the first ten periods to the 200th
-// it keeps about 5 J/m of kinetic energy (rms speed 0.14 m/s), and its energy rises by up to
-// 19.7 J/m above its running minimum before falling again: something (the projection on a
-// surface that the shifting keeps rearranging) feeds the motion as fast as it is damped.
-// It breaks the bound in the first period already (its energy first rises 5% of A above the
-// running minimum at t = 1.0 s) and is still moving at the end of any run, so a known failure is
-// shown by 20 periods as well as by 200 (67 s of the suite's time, now 7). Marked should_fail:
-// it turns red when fixed; then make it 200 periods like the WCSPH case.
+// ISPH with the violent-flow set-up passes the two-period energy test at d = 0.025 m (+0.46 J/m at
+// most), but at this resolution it keeps about 5 J/m of kinetic energy from the first ten periods
+// to the 200th (rms speed 0.14 m/s) where the wave is gone, and its energy rises by up to 19.7 J/m
+// above its running minimum before falling again: something (the projection on a surface that the
+// shifting keeps rearranging) feeds the motion as fast as it is damped. It breaks the bound in the
+// first period already (its energy first rises 5% of A above the running minimum at t = 1.0 s;
+// 7.1 J/m within 20 periods), so a known failure is shown by 20 periods as well as by 200 (67 s of
+// the suite's time, now 7). At d = 0.025 m it rises 1.96 J/m (at t = 10 s) within 20 periods and
+// still sloshes at the end (0.036 m between the walls). Marked should_fail: it turns red when
+// fixed; then make it 200 periods like the WCSPH case.
 TEST_CASE(
-    "stability: an ISPH sloshing tank (violent-flow set-up) never gains energy and ends at rest (known to fail "
-    "within 20 periods)" *
+    "stability: an ISPH sloshing tank (violent-flow set-up) never gains energy (known to fail within 20 "
+    "periods)" *
     doctest::should_fail()) {
   check_long_sloshing(
       "isph", 20, {"method.name=isph", "method.wall_rows=\"shepard\"", "method.ppe_laplacian=\"standard\"",
@@ -102,15 +111,16 @@ TEST_CASE(
                "method.compression_relaxation=0.5", "shifting.model=\"fickian\""});
 }
 
-// MPS at its own influence radius (r_e = 3.1 l0) does not gain energy here: over 200 periods (37 s
-// on 2 threads) E never rises above E(0) and does not drift (after the first ten periods it stays
-// 28-32 J/m below E(0)). But it never comes to rest: the number-density source's pressure noise
-// (the jitter of the resting tank, docs/mps.md) keeps 1.3-2.8 J/m of kinetic energy in the water
-// (rms speed about 0.1 m/s) to the end, and E wanders up to 4.8 J/m above its running minimum (the
-// bound is 1.5). 20 periods show both (4.2 J/m, 2.4 J/m left at the end). Marked should_fail.
+// MPS at its own influence radius (r_e = 3.1 l0): over 200 periods (37 s on 2 threads) E never
+// rises above E(0) and does not drift (after the first ten periods it stays 28-32 J/m below E(0)),
+// but the number-density source's pressure noise (the jitter of the resting tank, docs/mps.md)
+// keeps 1.3-2.8 J/m of kinetic energy in the water (rms speed about 0.1 m/s) where the wave is gone
+// (0.016 m between the walls), and E wanders up to 4.8 J/m above its running minimum (the bound is
+// 1.5): energy the noise puts in before it is damped. 20 periods show it (4.2 J/m). At d = 0.025 m
+// the largest rise is the stair's collapse, 4.7 J/m at t = 0.3 s (as in tests/energy_test.cpp).
+// Marked should_fail.
 TEST_CASE(
-    "stability: an MPS sloshing tank never gains energy and ends at rest (known to fail within 20 periods: "
-    "it keeps moving)" *
+    "stability: an MPS sloshing tank never gains energy (known to fail within 20 periods: its pressure noise)" *
     doctest::should_fail()) {
   check_long_sloshing("mps", 20, {"method.name=mps"});
 }
