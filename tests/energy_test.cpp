@@ -21,7 +21,7 @@
 // then falls (-6.8 J by 2.4 s), and only 0.089 m of the wave is left after two periods. (Until
 // 2026-11-26 the scene fixed smoothing_ratio = 1.5, which gave MPS r_e = 1.5 l0, a neighbourhood
 // of the four nearest particles: it gained 16 J, 69% of A.) The ISPH paper set-up gains 320 J and
-// stops at t = 1.3 s. Their cases are marked should_fail: they pass while the defect is there and
+// stops at t = 1.26 s (a particle thrown out of the domain). Their cases are marked should_fail: they pass while the defect is there and
 // turn red, to be flipped, once it is fixed.
 #include <doctest/doctest.h>
 
