@@ -21,8 +21,8 @@
 // then falls (-6.8 J by 2.4 s), and only 0.089 m of the wave is left after two periods. (Until
 // 2026-11-26 the scene fixed smoothing_ratio = 1.5, which gave MPS r_e = 1.5 l0, a neighbourhood
 // of the four nearest particles: it gained 16 J, 69% of A.) The ISPH paper set-up gains 320 J and
-// stops at t = 1.26 s (a particle thrown out of the domain). Their cases are marked should_fail: they pass while the defect is there and
-// turn red, to be flipped, once it is fixed.
+// stops at t = 1.26 s (a particle thrown out of the domain). Their cases are marked should_fail:
+// they pass while the defect is there and turn red, to be flipped, once it is fixed.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -51,15 +51,17 @@ void check_sloshing_energy(const std::string& method, std::vector<std::string> s
   const auto &kinetic = probes["kinetic_energy"], &potential = probes["potential_energy"];
   const auto &left = probes["height_left"], &right = probes["height_right"];
   REQUIRE(t.size() > 2);
-  const double A = 0.5 * 1000 * 9.81 * 0.125 * (0.6 * 0.6 + 0.575 * 0.575 + 0.55 * 0.55 + 0.525 * 0.525 +
-                                                0.475 * 0.475 + 0.45 * 0.45 + 0.425 * 0.425 + 0.4 * 0.4 - 8 * 0.25);
+  const double A = 0.5 * 1000 * 9.81 * 0.125 *
+                   (0.6 * 0.6 + 0.575 * 0.575 + 0.55 * 0.55 + 0.525 * 0.525 + 0.475 * 0.475 + 0.45 * 0.45 +
+                    0.425 * 0.425 + 0.4 * 0.4 - 8 * 0.25);
   const double E0 = kinetic[0] + potential[0];
   double highest = -1e300, lowest = 1e300;
   for (std::size_t k = 0; k < t.size(); ++k) {
     const double E = kinetic[k] + potential[k] - E0;
     highest = std::max(highest, E), lowest = std::min(lowest, E);
   }
-  MESSAGE(method, ": E - E(0) between ", lowest, " and ", highest, " J/m (A = ", A, " J/m) to t = ", t.back(), " s");
+  MESSAGE(method, ": E - E(0) between ", lowest, " and ", highest, " J/m (A = ", A, " J/m) to t = ", t.back(),
+          " s");
   CHECK(highest <= 0.05 * A);
   CHECK(lowest >= -1.05 * A);
 
@@ -94,8 +96,9 @@ TEST_CASE(
   check_sloshing_energy("wcsph", {"method.integrator=midpoint"});
 }
 
-TEST_CASE("energy: an MPS sloshing tank never gains energy (known to fail: MPS gains 18% of it, the wave decays)" *
-          doctest::should_fail()) {
+TEST_CASE(
+    "energy: an MPS sloshing tank never gains energy (known to fail: MPS gains 18% of it, the wave decays)" *
+    doctest::should_fail()) {
   check_sloshing_energy("mps");
 }
 
@@ -103,14 +106,17 @@ TEST_CASE("energy: an MPS sloshing tank never gains energy (known to fail: MPS g
 // E - E(0) between -15.6 and +0.46 J/m (the loss is mostly the column settling), period 1.231 s
 // (4.1% long), 0.141 m left after two periods. (At h = 1.5 d, the scene's until 2026-11-26:
 // -22.8 .. +0.23 J/m, 1.220 s, 0.161 m; with compression_relaxation 0.05 it lost 77 J.)
-TEST_CASE("energy: an ISPH sloshing tank with the violent-flow set-up never gains energy and keeps the period") {
-  check_sloshing_energy("isph", {"method.wall_rows=\"shepard\"", "method.ppe_laplacian=\"standard\"",
-                                 "method.pressure_gradient=\"symmetric\"", "method.free_surface_pressure=\"particle\"",
-                                 "method.viscous_laplacian=\"standard\"", "solver.tolerance=1e-6",
-                                 "method.compression_relaxation=0.5", "shifting.model=\"fickian\"", "time.cfl=0.2"});
+TEST_CASE(
+    "energy: an ISPH sloshing tank with the violent-flow set-up never gains energy and keeps the period") {
+  check_sloshing_energy(
+      "isph", {"method.wall_rows=\"shepard\"", "method.ppe_laplacian=\"standard\"",
+               "method.pressure_gradient=\"symmetric\"", "method.free_surface_pressure=\"particle\"",
+               "method.viscous_laplacian=\"standard\"", "solver.tolerance=1e-6",
+               "method.compression_relaxation=0.5", "shifting.model=\"fickian\"", "time.cfl=0.2"});
 }
 
-TEST_CASE("energy: an ISPH sloshing tank never gains energy (known to fail: the paper set-up gains and stops)" *
-          doctest::should_fail()) {
+TEST_CASE(
+    "energy: an ISPH sloshing tank never gains energy (known to fail: the paper set-up gains and stops)" *
+    doctest::should_fail()) {
   check_sloshing_energy("isph");
 }

@@ -25,7 +25,8 @@ spacing = 0.0125
 [material]
 density = 1000.0
 [method]
-name = ")" + method + R"("
+name = ")" +
+         method + R"("
 [time]
 end = 0.001
 [output]
