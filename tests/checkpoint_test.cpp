@@ -201,11 +201,20 @@ TEST_CASE("checkpoint: SIGINT stops a checkpointed run with a checkpoint where i
   CHECK(stopped < 0.3);
   CHECK(stopped >= 0.03);
   CHECK(test::read_dataset(part / "checkpoint.h5", "clock").values.at(0) == doctest::Approx(stopped).epsilon(1e-9));
+  const double wall_before = test::json_number(test::read_text(part / "summary.json"), "wall_time_s");
   REQUIRE(wait_or_kill(spawn({bin, "resume", part.string(), "--threads", "2", "--quiet"}), 120) == kExitDone);
   auto a = frames_of(full), b = frames_of(part);
   REQUIRE(a.size() == b.size());
   for (std::size_t k = 0; k < a.size(); ++k)
     REQUIRE(test::read_dataset(a[k], "position").values == test::read_dataset(b[k], "position").values);
+  // The resumed run's summary and profile are the whole run's, not its last segment's: the
+  // first system's calls (one per step) are the unstopped run's, the wall time includes the
+  // part before the stop.
+  auto summary = test::read_text(part / "summary.json"), profile = test::read_text(part / "profile.json");
+  const double steps = test::json_number(summary, "steps");
+  CHECK(steps == test::json_number(test::read_text(full / "summary.json"), "steps"));
+  CHECK(test::json_number(profile, "calls") == steps);
+  CHECK(test::json_number(summary, "wall_time_s") > wall_before);
 }
 
 TEST_CASE("checkpoint: a disk that fills after a checkpoint leaves that checkpoint whole, and resume continues from it") {

@@ -410,6 +410,8 @@ class Runner {
     k.next_output = next_output_, k.next_probe = next_probe_, k.next_checkpoint = next_checkpoint_;
     k.initial_fluid_mass = initial_.fluid_mass, k.initial_fluid_volume = initial_.fluid_volume;
     k.removed = (long long)removed_, k.removed_mass = removed_mass_;
+    k.wall_time_s = wall_elapsed(), k.profile_step_total_s = profiler_.step_total_s();
+    c.profile = profiler_.entries();
     c.scene.path = fs::absolute(scene_.path).string();
     c.scene.text = scene_text_;
     c.scene.overrides = with_end_time(opt_);
@@ -428,6 +430,11 @@ class Runner {
     c.cell_order.assign(order.begin(), order.end());
     for (auto& system : scheduler_->pipeline()) c.system_states.push_back({system->name(), system->checkpoint_state(world_, res_)});
     return c;
+  }
+
+  // The run's wall time: this segment's plus those before a resume.
+  double wall_elapsed() const {
+    return wall_before_ + std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
   }
 
   void write_checkpoint_now() {
@@ -449,6 +456,8 @@ class Runner {
     next_output_ = k.next_output, next_probe_ = k.next_probe, next_checkpoint_ = k.next_checkpoint;
     initial_.fluid_mass = k.initial_fluid_mass, initial_.fluid_volume = k.initial_fluid_volume;
     removed_ = std::size_t(k.removed), removed_mass_ = k.removed_mass;
+    wall_before_ = k.wall_time_s;
+    profiler_.restore(c.profile, k.profile_step_total_s);
     frames_ = c.frames;
     probe_rows_ = c.probe_rows;
     restored_order_ = c.cell_order;
@@ -494,7 +503,7 @@ class Runner {
     write_text_atomic(out_ / "profile.json", profiler_.json());
     if (opt_.trace) write_text_atomic(out_ / "trace.json", profiler_.trace_json());
     if (!opt_.quiet) {
-      double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
+      double wall = wall_elapsed();
       std::printf("%s", profiler_.table().c_str());
       for (auto& [name, value] : metrics()) std::printf("metric %s = %.6g\n", name.c_str(), value);
       std::printf("%s: %s, %lld steps, t = %.6g s, wall %.2f s, %.3g particle-steps/s\n", scene_.name.c_str(),
@@ -504,7 +513,7 @@ class Runner {
 
   void write_summary(const std::string& status, const std::string& message) {
     auto now = diagnose(world_, context_.rho0);
-    double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
+    double wall = wall_elapsed();
     const auto& nl = res_.get(neighbours_resource);
     JsonWriter w;
     w.begin_object();
@@ -613,6 +622,7 @@ class Runner {
   std::string scene_text_;
   double checkpoint_interval_ = 0, next_checkpoint_ = 0;
   std::chrono::steady_clock::time_point wall_start_;
+  double wall_before_ = 0;  // the wall time of the segments before a resume (the checkpoint's)
 };
 
 std::vector<std::string> with_end_time(const RunOptions& opt) {

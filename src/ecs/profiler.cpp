@@ -31,6 +31,15 @@ void Profiler::record(std::size_t s, Clock::time_point begin, Clock::time_point 
   }
 }
 
+void Profiler::restore(const std::vector<Entry>& earlier, double step_total_s) {
+  for (auto& e : earlier) {
+    auto& mine = entries_[slot(e.name)];
+    mine.calls += e.calls;
+    mine.total_s += e.total_s;
+  }
+  step_total_s_ += step_total_s;
+}
+
 double Profiler::accounted_s() const {
   double t = 0;
   for (auto& e : entries_) t += e.total_s;

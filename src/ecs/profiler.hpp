@@ -28,6 +28,9 @@ class Profiler {
   // Adds one timed call to a slot. A slot is only ever timed by one running node at a time.
   void record(std::size_t slot, Clock::time_point begin, Clock::time_point end);
   void add_step_time(double s) { step_total_s_ += s; }
+  double step_total_s() const { return step_total_s_; }
+  // Adds the calls and seconds of an earlier segment of the run (a checkpoint's), by name.
+  void restore(const std::vector<Entry>& earlier, double step_total_s);
 
   const std::vector<Entry>& entries() const { return entries_; }
   double accounted_s() const;

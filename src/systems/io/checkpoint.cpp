@@ -66,7 +66,9 @@ std::vector<std::pair<std::string, double*>> clock_fields(CheckpointClock& c, do
           {"initial_fluid_mass", &c.initial_fluid_mass},
           {"initial_fluid_volume", &c.initial_fluid_volume},
           {"removed", &removed},
-          {"removed_mass", &c.removed_mass}};
+          {"removed_mass", &c.removed_mass},
+          {"wall_time_s", &c.wall_time_s},
+          {"profile_step_total_s", &c.profile_step_total_s}};
 }
 
 }  // namespace
@@ -120,6 +122,16 @@ void write_checkpoint(const std::filesystem::path& path, const World<D>& world, 
       write_raw(file, "system_state_" + std::to_string(k), H5T_NATIVE_DOUBLE, st.data(), {st.size()});
     }
     write_string(file, "system_names", system_names);
+    std::string profile_names;
+    std::vector<double> calls, totals;
+    for (auto& e : c.profile) {
+      profile_names += e.name + "\n";
+      calls.push_back(double(e.calls));
+      totals.push_back(e.total_s);
+    }
+    write_string(file, "profile_names", profile_names);
+    write_raw(file, "profile_calls", H5T_NATIVE_DOUBLE, calls.data(), {calls.size()});
+    write_raw(file, "profile_seconds", H5T_NATIVE_DOUBLE, totals.data(), {totals.size()});
 
     // Columns, exactly as in memory.
     H5Handle group{H5Gcreate2(file, "columns", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
@@ -195,6 +207,13 @@ Checkpoint read_checkpoint_header(const std::filesystem::path& path) {
     for (std::size_t k = 0; k < system_names.size(); ++k)
       c.system_states.push_back(
           {system_names[k], read_raw<double>(file.id, "system_state_" + std::to_string(k), H5T_NATIVE_DOUBLE)});
+    if (H5Lexists(file.id, "profile_names", H5P_DEFAULT) > 0) {
+      auto names = split(read_string(file.id, "profile_names"), '\n');
+      auto calls = read_raw<double>(file.id, "profile_calls", H5T_NATIVE_DOUBLE);
+      auto seconds = read_raw<double>(file.id, "profile_seconds", H5T_NATIVE_DOUBLE);
+      for (std::size_t k = 0; k < names.size() && k < calls.size() && k < seconds.size(); ++k)
+        c.profile.push_back({names[k], std::int64_t(calls[k]), seconds[k]});
+    }
     std::vector<hsize_t> dims;
     auto rows = read_raw<double>(file.id, "probe_rows", H5T_NATIVE_DOUBLE, &dims);
     if (dims.size() == 2 && dims[1] > 0)

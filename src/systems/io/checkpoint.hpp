@@ -3,7 +3,8 @@
 // one HDF5 file, written to NAME.tmp and renamed, so the file on disk is always a whole one.
 // Holds every column at full precision (vectors N x D, tensors N x D x D: no padding), the id
 // counter, the driver's clock (time, step, dt, the next output and probe times, the frames and
-// probe rows written so far, the initial fluid mass and volume, removed particles) and what is
+// probe rows written so far, the initial fluid mass and volume, removed particles, the wall time
+// and the profile so far) and what is
 // needed to rebuild the pipeline: the scene file's path and text and the --set overrides, and
 // the ryushi version. Resources that systems rebuild every step (neighbour lists, cell grids,
 // matrices, multigrid hierarchies) are not stored; a Verlet list is rebuilt on the first step
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "ecs/profiler.hpp"
 #include "ecs/world.hpp"
 #include "systems/io/xdmf.hpp"
 
@@ -23,6 +25,9 @@ struct CheckpointClock {
   double initial_fluid_mass = 0, initial_fluid_volume = 0;
   long long removed = 0;
   double removed_mass = 0;
+  // The run's wall time and the profiler's step total so far, over every segment: a resumed
+  // run's summary and profile.json cover the whole run (0 in checkpoints written before them).
+  double wall_time_s = 0, profile_step_total_s = 0;
 };
 
 struct CheckpointScene {
@@ -41,6 +46,8 @@ struct Checkpoint {
   std::vector<std::uint32_t> cell_order;
   // Each system's own state (System::checkpoint_state), by pipeline position and name.
   std::vector<std::pair<std::string, std::vector<double>>> system_states;
+  // The profiler's entries so far (calls and seconds per system and driver task).
+  std::vector<Profiler::Entry> profile;
 };
 
 template <int D>
