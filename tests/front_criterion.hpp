@@ -20,9 +20,10 @@ struct FrontPoint {
   double T, Z;
 };
 
-inline std::vector<FrontPoint> martin_moyce() {
+// A table of tools/reference/ (default: the n^2 = 2 column's front).
+inline std::vector<FrontPoint> martin_moyce(const std::string& file = "martin_moyce_1952_n2_2.csv") {
   std::vector<FrontPoint> pts;
-  std::ifstream in(source_dir() / "tools" / "reference" / "martin_moyce_1952_n2_2.csv");
+  std::ifstream in(source_dir() / "tools" / "reference" / file);
   std::string line;
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#' || line[0] == 'T') continue;
@@ -57,8 +58,8 @@ struct FrontFit {
   std::string unshifted;        // the errors without a shift, for the message
 };
 
-inline FrontFit fit_time_origin(const Front& f, double T_max = 2.5) {
-  auto data = martin_moyce();
+inline FrontFit fit_time_origin(const Front& f, double T_max = 2.5,
+                                const std::vector<FrontPoint>& data = martin_moyce()) {
   auto max_error = [&](double shift) {
     double worst = 0;
     for (auto& p : data)

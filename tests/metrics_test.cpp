@@ -30,6 +30,28 @@ TEST_CASE("metrics: dam_break_front is the time-origin criterion of the tests, c
   CHECK(test::json_number(summary, "front_error_unshifted") > fit.error);
 }
 
+TEST_CASE("metrics: dam_break_front reads the square column in its own time, T = t sqrt(g/a)") {
+  // Martin & Moyce's T = n t sqrt(g/a) with n^2 the column's height over its width: 1 for the
+  // square column (the scene's block), where the n^2 = 2 scenes have t sqrt(2g/a).
+  auto dir = test::scratch("metric_front_square");
+  auto r = test::run_command(bin() + " run " + test::scene_path("dam_break_square_2d.toml") + " --out " + dir.string() +
+                             " --quiet --set particles.spacing=0.025 --end-time 0.75");
+  REQUIRE_MESSAGE(r.code == kExitDone, r.output);
+  auto summary = test::read_text(dir / "summary.json");
+  const double a = 0.25, g = 9.81;
+  auto front = test::front_of(test::read_csv(dir / "probes.csv"), a, std::sqrt(a / g));
+  // Past the reference's first two points (T = 3.90, 4.49) and short of the third (5.17) at any
+  // shift in [0, 0.3]: the metric judges a run on the points it reached.
+  REQUIRE(front.T.back() > 4.49);
+  REQUIRE(front.T.back() < 5.17 - 0.3);
+  std::vector<test::FrontPoint> reached;
+  for (auto& p : test::martin_moyce("martin_moyce_1952_square.csv"))
+    if (p.T <= front.T.back()) reached.push_back(p);
+  auto fit = test::fit_time_origin(front, 10.0, reached);
+  CHECK(test::json_number(summary, "front_error") == doctest::Approx(fit.error).epsilon(1e-9));
+  CHECK(test::json_number(summary, "front_error_shift") == doctest::Approx(fit.shift).epsilon(1e-9));
+}
+
 TEST_CASE("metrics: hydrostatic_pressure and probe_csv equal their definitions on the run's own output") {
   auto dir = test::scratch("metric_hydro");
   auto r = test::run_command(bin() + " run " + test::scene_path("hydrostatic_2d.toml") + " --out " + dir.string() +

@@ -142,3 +142,48 @@ TEST_CASE("validation: 3D dam break front meets the criterion, follows the 2D fr
   CHECK(inside.outside == 0);
   CHECK(front3.Z.back() >= 3.9);  // the front reached the far wall
 }
+
+// The square column (Martin & Moyce 1952, n^2 = 1; tools/reference/martin_moyce_1952_square_height.csv,
+// digitised from Xie 2021, +-0.05 in T): the time the water at the back wall takes to fall to
+// each of their marks H = h/a = 8/9 .. 5/9, against theirs, for the three methods at a/d = 20
+// (each its own dam-break scene with the square column in a 15a tank). These marks are passed
+// before T = t sqrt(g/a) = 2.2, while the column drains as a body: every method within 0.15 of
+// the experiment there (three times the digitisation's uncertainty; measured at a/d = 40: WCSPH
+// 0.03, MPS 0.12, ISPH 0.12, and the gate's opening, up to 0.21 in these units by the n^2 = 2
+// criterion, not fitted). Later marks (H = 4/9 .. 1/9) and the front (the data start at Z = 6,
+// a sheet a tenth of a thick) are reported, not asserted: docs/validation.md, "The square column".
+TEST_CASE("validation: the square column drains at the back wall as Martin and Moyce measured, every method") {
+  const double a = 0.25, g = 9.81;
+  const double t_scale = std::sqrt(a / g);  // T = t sqrt(g/a) for n^2 = 1
+  std::vector<test::FrontPoint> marks;      // (T, H) of the experiment
+  for (auto& p : test::martin_moyce("martin_moyce_1952_square_height.csv"))
+    if (p.T > 0 && p.Z >= 5.0 / 9 - 1e-3) marks.push_back(p);
+  REQUIRE(marks.size() == 4);
+  for (std::string scene : {"dam_break_2d.toml", "dam_break_mps_2d.toml", "dam_break_isph_2d.toml"}) {
+    auto out = test::scratch("square_column_" + scene.substr(0, scene.size() - 5));
+    RunOptions opt;
+    opt.scene = test::scene_path(scene);
+    opt.out_dir = out.string();
+    opt.quiet = true;
+    opt.end_time = 2.6 * t_scale;
+    opt.sets = {"particles.spacing=0.0125", "fluid.0.max=[0.25, 0.25]", "wall.0.max=[3.75, 1.0]",
+                "domain.max=[3.85, 3.0]", "output.interval=0.1", "output.probe_interval=0.002"};
+    REQUIRE(run_scene(opt) == kExitDone);
+    auto probes = test::read_csv(out / "probes.csv");
+    const auto& t = probes["time"];
+    const auto& h = probes["height_left_wall"];
+    std::string report;
+    double worst = 0;
+    for (auto& m : marks) {
+      // The first time the height falls to the mark (linear between samples).
+      double crossed = NAN;
+      for (std::size_t k = 1; k < t.size() && std::isnan(crossed); ++k)
+        if (h[k] / a <= m.Z) crossed = (t[k - 1] + (t[k] - t[k - 1]) * (h[k - 1] / a - m.Z) / ((h[k - 1] - h[k]) / a)) / t_scale;
+      REQUIRE_MESSAGE(!std::isnan(crossed), scene << ": the water at the back wall never fell to H = " << m.Z);
+      report += "H = " + std::to_string(m.Z) + " at T = " + std::to_string(crossed) + " (" + std::to_string(m.T) + "); ";
+      worst = std::max(worst, std::abs(crossed - m.T));
+    }
+    MESSAGE(scene, ": ", report, "largest difference ", worst);
+    CHECK(worst <= 0.15);
+  }
+}

@@ -76,7 +76,9 @@ using Values = std::vector<std::pair<std::string, double>>;
 // The surge front after one fitted time-origin shift (the criterion decided in the ISPH issue).
 void dam_break_front(const Scene& s, const MetricSpec& m, const ProbeRows& probes, double g, Values& out) {
   auto [t, x] = probe_series(s, probes, m.probe);
-  const double a = m.width, t_scale = std::sqrt(a / (2 * g));
+  // Martin & Moyce's time T = n t sqrt(g / a), n^2 the column's height over its width: t sqrt(2g/a)
+  // for the n^2 = 2 column, t sqrt(g/a) for the square one.
+  const double a = m.width, t_scale = std::sqrt(a / (m.height_ratio * g));
   std::vector<double> T, Z;
   for (std::size_t k = 0; k < t.size(); ++k) T.push_back(t[k] / t_scale), Z.push_back(x[k] / a);
   const double reached = T.empty() ? 0.0 : T.back();

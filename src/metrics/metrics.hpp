@@ -2,8 +2,9 @@
 // [[metric]] entries: a run's error against a reference that ships with ryushi, computed from
 // the final state and the probe series, written under "metrics" in summary.json and printed at
 // the end of the run (issue 9). Types:
-//   dam_break_front       the surge_front probe as Z = x/a against T = t sqrt(2 g / a) and a
-//                         reference table (default Martin & Moyce 1952, n^2 = 2,
+//   dam_break_front       the surge_front probe as Z = x/a against T = n t sqrt(g / a) (n^2 the
+//                         column's height over a: t sqrt(2g/a) for n^2 = 2) and a reference
+//                         table (default Martin & Moyce 1952, n^2 = 2,
 //                         tools/reference/martin_moyce_1952_n2_2.csv): the largest relative
 //                         error for T <= t_max after ONE fitted time-origin shift in
 //                         [0, max_shift] (the criterion decided in the ISPH issue); NAME is

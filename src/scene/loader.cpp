@@ -832,6 +832,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       spec.type = *m["type"].value<std::string>();
       spec.probe = m["probe"].value_or(std::string());
       spec.width = m["width"].value_or(0.0);
+      spec.height_ratio = m["height_ratio"].value_or(0.0);
       if (auto v = m["surface"].value<double>()) spec.surface = *v;
       if (auto v = m["force"].value<double>()) spec.force = *v;
       if (auto v = m["depth"].value<double>()) spec.depth = *v;
@@ -890,12 +891,19 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       FluidBlock first;  // an imports-only scene has no block to take defaults from
       first.min.assign(D, 0.0), first.max.assign(D, 0.0);
       if (!sc.fluid.empty()) first = sc.fluid.front();
-      if (spec.type == "dam_break_front" && spec.width <= 0) spec.width = first.max[0] - first.min[0];
       auto need = [&](bool ok, const char* key, const std::string& what) {
         if (!ok)
           val.fail(where("metric", i, key) ? where("metric", i, key) : &(*arr)[i], path_of("metric", i, key),
                    "[[metric]] '" + spec.name + "' of type " + spec.type + " " + what);
       };
+      if (spec.type == "dam_break_front") {
+        if (spec.width <= 0) spec.width = first.max[0] - first.min[0];
+        if (spec.height_ratio <= 0 && spec.width > 0)
+          spec.height_ratio = (first.max[D - 1] - first.min[D - 1]) / spec.width;
+        need(spec.width > 0, "width", "needs the column width `width` > 0 (or a first [[fluid]] block)");
+        need(spec.height_ratio > 0, "height_ratio",
+             "needs the column's height over its width `height_ratio` > 0 (or a first [[fluid]] block)");
+      }
       if (spec.type == "poiseuille_profile") {
         need(spec.width > 0, "width", "needs the channel width `width` > 0");
         need(std::isfinite(spec.force) && spec.force != 0, "force", "needs the body force `force` (non-zero)");

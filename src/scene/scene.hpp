@@ -117,6 +117,7 @@ struct MetricSpec {
   std::string reference;  // resolved path ("" : the type's default)
   std::vector<std::pair<double, double>> table;  // the reference, read and checked by the loader
   double width = 0;       // dam_break_front: a (0: the first fluid block's width)
+  double height_ratio = 0;  // dam_break_front: n^2, the column's height over a (0: the first block's)
   double surface = std::numeric_limits<double>::quiet_NaN();  // hydrostatic_pressure
   double max_shift = 0.3, t_max = 2.5;
   double force = std::numeric_limits<double>::quiet_NaN();  // poiseuille_profile: F, m/s^2
