@@ -215,6 +215,9 @@ TEST_CASE("checkpoint: SIGINT stops a checkpointed run with a checkpoint where i
   CHECK(steps == test::json_number(test::read_text(full / "summary.json"), "steps"));
   CHECK(test::json_number(profile, "calls") == steps);
   CHECK(test::json_number(summary, "wall_time_s") > wall_before);
+  // The resumed run goes on checkpointing at the interval the first was given on the command
+  // line (it wrote none before: a second stop lost the resumed segment).
+  CHECK(test::read_dataset(part / "checkpoint.h5", "clock").values.at(0) > stopped);
 }
 
 TEST_CASE("checkpoint: a disk that fills after a checkpoint leaves that checkpoint whole, and resume continues from it") {
@@ -238,7 +241,12 @@ TEST_CASE("checkpoint: a disk that fills after a checkpoint leaves that checkpoi
   CHECK(saved <= stopped);
   // With the disk free again the run resumes from it and finishes (a short end: the point is
   // that the checkpoint opens and carries on, not the remaining seconds).
-  auto resumed = test::run_command(bin + " resume " + out.string() + " --quiet --end-time " + std::to_string(saved + 0.01));
+  auto resumed = test::run_command(bin + " resume " + out.string() + " --end-time " + std::to_string(saved + 0.01));
   CHECK_MESSAGE(resumed.code == kExitDone, resumed.output);
-  CHECK(test::json_raw(test::read_text(out / "summary.json"), "status") == "completed");
+  auto summary = test::read_text(out / "summary.json");
+  CHECK(test::json_raw(summary, "status") == "completed");
+  // Its first line counts the checkpoint's particles (it said 0 fluid + 0 wall before).
+  const auto fluid = static_cast<long long>(test::json_number(summary, "fluid_particles"));
+  CHECK(fluid > 0);
+  CHECK_MESSAGE(resumed.output.find(", " + std::to_string(fluid) + " fluid + ") != std::string::npos, resumed.output);
 }

@@ -52,6 +52,9 @@ int main(int argc, char** argv) {
   resume_cmd->add_option("--end-time", resume.end_time, "Run on to this time instead (s)");
   resume_cmd->add_option("--threads", resume.threads, "Worker threads (default: all cores)")->check(CLI::PositiveNumber);
   resume_cmd->add_flag("--quiet", resume.quiet, "No progress output and no profile table");
+  resume_cmd->add_option("--checkpoint-interval", resume.checkpoint_interval,
+                         "Write OUT/checkpoint.h5 every T of simulated time (default: the run's own interval)")
+      ->check(CLI::NonNegativeNumber);
 
   SweepOptions sweep;
   auto* sweep_cmd = app.add_subcommand(

@@ -239,8 +239,10 @@ class Runner {
       const auto& kind = world_.column(components::kind);
       const auto elastic = static_cast<std::size_t>(std::count(kind.begin(), kind.end(), kElastic));
       const std::string solids = elastic > 0 ? " + " + std::to_string(elastic) + " elastic" : "";
-      spdlog::info("{}: {}D {}, {} fluid + {} wall{} particles, {} -> {}", scene_.name, D, scene_.method,
-                   initial_.fluid, initial_.walls - elastic, solids, method_summary_, out_.string());
+      // A resumed run counts the checkpoint's particles (initial_ keeps only the start's mass and volume).
+      const auto now = resume_.empty() ? initial_ : diagnose(world_, context_.rho0);
+      spdlog::info("{}: {}D {}, {} fluid + {} wall{} particles, {} -> {}", scene_.name, D, scene_.method, now.fluid,
+                   now.walls - elastic, solids, method_summary_, out_.string());
     }
 
     std::string status = "completed", message;
@@ -421,6 +423,10 @@ class Runner {
     std::snprintf(b, sizeof b, "output.interval=%.17g", scene_.output_interval);
     c.scene.overrides.push_back(b);
     std::snprintf(b, sizeof b, "output.probe_interval=%.17g", scene_.probe_interval);
+    c.scene.overrides.push_back(b);
+    // And the checkpoint interval, which `run --checkpoint-interval` may have set outside the
+    // scene: without it a resumed run wrote no checkpoint, and its next stop lost the segment.
+    std::snprintf(b, sizeof b, "output.checkpoint_interval=%.17g", checkpoint_interval_);
     c.scene.overrides.push_back(b);
     c.scene.version = "ryushi 0.1.0";
     c.scene.dimension = D;
@@ -702,6 +708,7 @@ int resume_run(const ResumeOptions& ro) {
   opt.quiet = ro.quiet;
   opt.sets = c.scene.overrides;  // the original run's, its end time included
   if (ro.end_time) opt.end_time = ro.end_time;
+  if (ro.checkpoint_interval) opt.checkpoint_interval = ro.checkpoint_interval;
   return run_loaded(opt, file, c.scene.dimension);
 }
 

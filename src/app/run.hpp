@@ -25,6 +25,7 @@ struct ResumeOptions {
   std::string out_dir;
   int threads = 0;
   std::optional<double> end_time;
+  std::optional<double> checkpoint_interval;  // default: the run's own (the checkpoint's)
   bool quiet = false;
 };
 
