@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "app/exit_codes.hpp"
+#include "app/progress.hpp"
 #include "h5_read.hpp"
 #include "test_util.hpp"
 
@@ -249,4 +250,20 @@ TEST_CASE("checkpoint: a disk that fills after a checkpoint leaves that checkpoi
   const auto fluid = static_cast<long long>(test::json_number(summary, "fluid_particles"));
   CHECK(fluid > 0);
   CHECK_MESSAGE(resumed.output.find(", " + std::to_string(fluid) + " fluid + ") != std::string::npos, resumed.output);
+}
+
+// The progress line's rate and ETA count from where this process started. A run resumed at
+// t = 0.5 s, step 1000 (of a run to 1 s) that stands at t = 0.6 s, step 1100 after 10 s did 10
+// steps/s and needs 40 s more; counted from t = 0 it would claim 110 steps/s and 6.7 s (the
+// 255k benchmark's resumed segments printed "140 steps/s, ETA 117 s" for hours of work left).
+TEST_CASE("checkpoint: a resumed run's progress rate and ETA count from the resume") {
+  const auto resumed = progress_rate(0.5, 1000, 0.6, 1100, 10.0, 1.0);
+  CHECK(resumed.steps_per_second == doctest::Approx(10.0));
+  CHECK(resumed.eta_s == doctest::Approx(40.0));
+  const auto fresh = progress_rate(0.0, 0, 0.25, 50, 5.0, 1.0);
+  CHECK(fresh.steps_per_second == doctest::Approx(10.0));
+  CHECK(fresh.eta_s == doctest::Approx(15.0));
+  // Nothing advanced yet, or past the end: no division by zero, no negative time left.
+  CHECK(progress_rate(0.5, 1000, 0.5, 1000, 0.0, 1.0).eta_s == 0.0);
+  CHECK(progress_rate(0.0, 0, 1.2, 10, 1.0, 1.0).eta_s == 0.0);
 }

@@ -247,7 +247,7 @@ class Runner {
 
     std::string status = "completed", message;
     int code = kExitDone;
-    Progress progress(scene_.end_time, opt_.quiet);
+    Progress progress(time_, step_, scene_.end_time, opt_.quiet);
     try {
       if (resume_.empty()) {
         sample_probes_now();
