@@ -14,12 +14,27 @@ method=${2:?method: wcsph, mps or isph}
 out=${3:-out/bench_250k_$method}
 declare -A scene=([wcsph]=dam_break_2d.toml [mps]=dam_break_mps_2d.toml [isph]=dam_break_isph_2d.toml)
 [ -n "${scene[$method]:-}" ] || { echo "unknown method '$method'" >&2; exit 2; }
+# Where the run stands (simulated time, steps, wall time, status) from its summary.json, for the
+# segment log: a run that spans sittings keeps in OUT/segments.csv which binary ran which part.
+state() {
+  /usr/bin/python3 -c "
+import json, sys
+try:
+    s = json.load(open('$out/summary.json'))
+    print('%.6g,%d,%.1f,%s' % (s['simulated_time'], s['steps'], s['wall_time_s'], s['status']))
+except OSError:
+    print('0,0,0,none')"
+}
+mkdir -p "$out"
+[ -f "$out/segments.csv" ] || echo "started,ended,binary_md5,t_from,steps_from,wall_from,status_from,t_to,steps_to,wall_to,status_to" > "$out/segments.csv"
+started=$(date -u +%FT%TZ) before=$(state)
 if [ -f "$out/checkpoint.h5" ] && ! grep -q '"status": "completed"' "$out/summary.json" 2>/dev/null; then
   "$build/ryushi" resume "$out" --threads 2
 elif [ ! -f "$out/summary.json" ] || ! grep -q '"status": "completed"' "$out/summary.json"; then
   "$build/ryushi" run "scenes/${scene[$method]}" --out "$out" --threads 2 --set particles.spacing=0.0007 \
     --set time.end=1.0 --set output.interval=0.25 --set output.probe_interval=0.002 --checkpoint-interval 0.05
-fi
+fi || true  # an interrupted segment (exit 130) is logged and reported like a finished one
+echo "$started,$(date -u +%FT%TZ),$(md5sum "$build/ryushi" | cut -c1-12),$before,$(state)" >> "$out/segments.csv"
 /usr/bin/python3 - "$out" <<'PY'
 import json, sys
 out = sys.argv[1]
