@@ -125,6 +125,26 @@ TEST_CASE("kernels: W(0) and W at the joints match the published formulas (2D an
   }
 }
 
+TEST_CASE(
+    "kernels: the Wendland sum of an array of squared distances is the sum of w, and zero past the support") {
+  // MPS's smooth source density sums the Wendland kernel over each narrowed row in one loop
+  // (wendland_sum); it must be the kernel's own values summed (to round-off), nothing from
+  // beyond the support, and refuse another kernel.
+  const double h = 0.0014;
+  const Kernel<2> k(KernelType::WendlandC2, h);
+  std::vector<double> squared;
+  double expected = 0;
+  for (int i = 1; i <= 300; ++i) {
+    const double r = 2.4 * h * i / 300.0;  // to 1.2 times the support 2h
+    squared.push_back(r * r);
+    expected += k.w(r);
+  }
+  CHECK(k.wendland_sum(squared.data(), squared.size()) == doctest::Approx(expected).epsilon(1e-13));
+  const std::vector<double> outside{4.0 * h * h, 5.0 * h * h, 100.0 * h * h};
+  CHECK(k.wendland_sum(outside.data(), outside.size()) == 0.0);
+  CHECK_THROWS_AS(Kernel<2>(KernelType::Mps, h).wendland_sum(squared.data(), 1), std::logic_error);
+}
+
 TEST_CASE("kernels: the MPS weights of an array of squared distances are w's values, bit for bit") {
   // The MPS systems compute their pair weights with mps_weights (vectorised) and keep them for
   // the pressure rows and the pressure gradient: those must see exactly what w gives, inside r_e,

@@ -81,10 +81,14 @@ TEST_CASE("mps: hydrostatic tank, mean pressure follows rho g depth") {
   CHECK(std::abs(eta - H) < 0.5 * l0);
   for (std::size_t k = 0; k < y.size(); ++k) CHECK(std::abs(p[k] - slope * (eta - y[k])) < 0.01 * rho_g * H);
   auto summary = test::read_text(out / "summary.json");
-  // Mass is exact by construction; incompressibility shows in the interior number density:
-  // measured mean n*/n0 0.99993 (H/l0 = 20). 0.2% is about ten times the largest deviation of
-  // the 2D runs (2.5e-4 and 3.1e-4 in the dam breaks).
-  CHECK(std::abs(test::json_number(summary, "interior_number_density_ratio") - 1) < 0.002);
+  // Mass is exact by construction; incompressibility shows in the interior's density, the one the
+  // Poisson source holds (the smooth kernel's; docs/mps.md): 0.2% is about ten times the largest
+  // deviation of the 2D runs with the number-density source (its n*/n0: 0.99993 here, 2.5e-4 and
+  // 3.1e-4 in the dam breaks). n*/n0 with the MPS weight is printed beside it: on the disordered
+  // particles it reads high.
+  MESSAGE("interior density ", test::json_number(summary, "interior_density_ratio"), " rho0, n*/n0 ",
+          test::json_number(summary, "interior_number_density_ratio"));
+  CHECK(std::abs(test::json_number(summary, "interior_density_ratio") - 1) < 0.002);
   CHECK(test::json_number(summary, "max_relative_residual") <= 1e-8);
   // The fluid volume: in a tank of fixed width it is the width times the water level (probe
   // `surface`). The level jitters by up to 0.5 l0 from sample to sample (the surface particles'
@@ -131,7 +135,7 @@ TEST_CASE("mps: dam break with MGCG and DCG gives the same flow") {
   CHECK(test::json_raw(sa, "krylov") == "cg");  // the MPS Laplacian is symmetric
 }
 
-TEST_CASE("mps: dam break runs past the far-wall impact and keeps its number density") {
+TEST_CASE("mps: dam break runs past the far-wall impact and keeps its density") {
   auto out = test::scratch("mps_dam_break");
   const double a = 0.25, t_scale = std::sqrt(a / (2 * 9.81));
   // a / l0 = 20 to T = 3.8: the front reaches the far wall at T = 3.15; the window ends at 2.5.
@@ -139,9 +143,10 @@ TEST_CASE("mps: dam break runs past the far-wall impact and keeps its number den
   opt.sets.push_back("output.probe_interval=0.002");
   REQUIRE(run_scene(opt) == kExitDone);
   auto summary = test::read_text(out / "summary.json");
-  // Measured mean interior n*/n0 0.99995 just after the impact (a/l0 = 20, T = 3.8); bound as in
-  // the tank.
-  CHECK(std::abs(test::json_number(summary, "interior_number_density_ratio") - 1) < 0.002);
+  // The interior's density just after the impact (a/l0 = 20, T = 3.8); bound as in the tank.
+  MESSAGE("interior density ", test::json_number(summary, "interior_density_ratio"), " rho0, n*/n0 ",
+          test::json_number(summary, "interior_number_density_ratio"));
+  CHECK(std::abs(test::json_number(summary, "interior_density_ratio") - 1) < 0.002);
   auto probes = test::read_csv(out / "probes.csv");
   auto& front = probes["surge_front"];
   CHECK(front.front() / a == doctest::Approx(1.0));
@@ -287,7 +292,9 @@ TEST_CASE("mps: 3D dam break front meets the criterion and stays in its tank thr
   opt.sets = {"output.probe_interval=0.002", "output.interval=" + std::to_string(3.5 * t_scale)};
   REQUIRE(run_scene(opt) == kExitDone);
   auto summary = test::read_text(out / "summary.json");
-  CHECK(std::abs(test::json_number(summary, "interior_number_density_ratio") - 1) < 0.02);
+  MESSAGE("interior density ", test::json_number(summary, "interior_density_ratio"), " rho0, n*/n0 ",
+          test::json_number(summary, "interior_number_density_ratio"));
+  CHECK(std::abs(test::json_number(summary, "interior_density_ratio") - 1) < 0.02);
   CHECK(test::json_number(summary, "max_relative_residual") <= 1e-8);
   auto front = test::front_of(test::read_csv(out / "probes.csv"), a, t_scale);
   auto fit = test::fit_time_origin(front);

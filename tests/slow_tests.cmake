@@ -17,7 +17,7 @@ set_tests_properties("isph: a resting 3D tank stays at rest for 3 s (its vertica
                      PROPERTIES LABELS slow COST 40)
 set_tests_properties("mps: 3D dam break front meets the criterion and stays in its tank through the impact"
                      PROPERTIES LABELS slow COST 8)
-set_tests_properties("mps: dam break runs past the far-wall impact and keeps its number density" PROPERTIES LABELS slow COST 16)
+set_tests_properties("mps: dam break runs past the far-wall impact and keeps its density" PROPERTIES LABELS slow COST 16)
 set_tests_properties("isph poiseuille: the Eulerian 3D pipe follows the Bessel start-up and converges at l/d = 10, 16, 20"
                      PROPERTIES LABELS slow COST 50)
 set_tests_properties("energy: a WCSPH sloshing tank never gains energy and keeps the linear period"

@@ -44,6 +44,7 @@ MpsParameters<D> mps_parameters(const Scene& s) {
   p.nu = s.viscosity / s.density;
   p.surface_threshold = s.surface_threshold;
   p.relaxation = s.source_relaxation;
+  if (s.source_density == "smooth") p.set_source_kernel(s.source_support);
   p.clamp_negative_pressure = s.clamp_negative_pressure;
   p.cfl = s.cfl;
   double u = std::sqrt(2.0 * s.gravity_magnitude() * s.fluid_height());
@@ -108,18 +109,23 @@ MethodSetup<D> build_mps(const Scene& s, World<D>& world, const PipelineOptions&
   if (!options.dump_matrix_dir.empty())
     m.pipeline.push_back(std::make_shared<PressureSystemDump<D>>(options.dump_matrix_dir, options.dump_step));
   // Mass is a constant column (exact by construction); what incompressibility keeps is the
-  // number density of the particles below the surface: its mean over them against n0.
-  const double n0 = p.n0;
-  m.diagnostics = [n0](const World<D>& w, const Resources&) -> std::vector<std::pair<std::string, double>> {
+  // source's density of the particles below the surface: its mean over them against rho0 (the
+  // smooth kernel's, or n*/n0 with the number-density source), and n*/n0 beside it.
+  const double n0 = p.n0, rho0 = p.rho0;
+  m.diagnostics = [n0, rho0](const World<D>& w,
+                             const Resources&) -> std::vector<std::pair<std::string, double>> {
     if (!w.has(components::number_density.name) || !w.has(components::pressure_role.name)) return {};
     auto& n = w.column(components::number_density);
+    auto& rho = w.column(components::density);
     auto& role = w.column(components::pressure_role);
     auto& kind = w.column(components::kind);
-    double sum = 0;
+    double sum = 0, density_sum = 0;
     std::size_t count = 0;
     for (std::size_t i = 0; i < w.size(); ++i)
-      if (kind[i] == kFluid && role[i] == kPressureUnknown) sum += n[i] / n0, ++count;
+      if (kind[i] == kFluid && role[i] == kPressureUnknown)
+        sum += n[i] / n0, density_sum += rho[i] / rho0, ++count;
     return {{"interior_number_density_ratio", count ? sum / count : 1.0},
+            {"interior_density_ratio", count ? density_sum / count : 1.0},
             {"interior_particles", static_cast<double>(count)}};
   };
   return m;

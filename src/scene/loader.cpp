@@ -268,6 +268,9 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.hydrostatic_init = *get("method", "hydrostatic_init").value<bool>();
   sc.surface_threshold = *get("method", "surface_threshold").value<double>();
   sc.source_relaxation = *get("method", "source_relaxation").value<double>();
+  sc.source_density =
+      root["method"]["source_density"].value_or(std::string(D == 2 ? "smooth" : "number_density"));
+  sc.source_support = *get("method", "source_support").value<double>();
   sc.wall_pressure_layers = static_cast<int>(*get("method", "wall_pressure_layers").value<long long>());
   sc.isph_description = *get("method", "description").value<std::string>();
   sc.ppe_laplacian = *get("method", "ppe_laplacian").value<std::string>();

@@ -184,6 +184,8 @@ struct Scene {
   bool wall_slip = false, hydrostatic_init = true;
   // method mps
   double surface_threshold = 0.97, source_relaxation = 0.2;
+  std::string source_density = "smooth";  // the loader's default: smooth in 2D, number_density in 3D
+  double source_support = 0.9;
   int wall_pressure_layers = 1;
   double collision_distance = 0.5, wall_collision_distance = 0.8, collision_restitution = 0.2;
   bool clamp_negative_pressure = true;

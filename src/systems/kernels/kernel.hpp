@@ -99,6 +99,20 @@ class Kernel {
     for (std::size_t k = 0; k < n; ++k) out[k] = mps_weight(std::sqrt(r2[k]) * inv_h, sigma);
   }
 
+  // sum_k w(sqrt(r2[k])) for the Wendland C2 kernel, in one branch-free loop (the MPS source's
+  // smooth density, over the rows the number density narrows). The same value as summing w.
+  double wendland_sum(const double* r2, std::size_t n) const {
+    if (type_ != KernelType::WendlandC2)
+      throw std::logic_error("wendland_sum on a kernel that is not wendland_c2");
+    const double inv_h = inv_h_;
+    double sum = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double q = std::sqrt(r2[k]) * inv_h, t = std::max(1.0 - 0.5 * q, 0.0), t2 = t * t;
+      sum += t2 * t2 * (2.0 * q + 1.0);
+    }
+    return sigma_ * sum;
+  }
+
   double grad_factor(double r) const {
     const double q = r * inv_h_;
     const double s = sigma_ * inv_h_ * inv_h_;  // dW/dr / r = s * (df/dq) / q

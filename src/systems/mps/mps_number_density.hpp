@@ -2,8 +2,10 @@
 // Particle number density at the predicted positions, n*_i = sum_{j != i} w(r_ij) (BMG paper
 // eq. 6), for fluid and wall particles, and the free-surface rule of MPS: a particle with
 // n*_i < beta n0 is on the surface and gets the Dirichlet value p = 0 (Koshizuka's beta = 0.97).
-// Writes the `pressure_role` of every particle (unknown, surface, none for dummies) and, for
-// output, density = rho0 n* / n0.
+// Writes the `pressure_role` of every particle (unknown, surface, none for dummies) and the
+// density of the Poisson source: rho0 n* / n0, or with the smooth source rho0 s*_i / s0, s*_i =
+// sum_{j != i} W(r_ij) with the Wendland kernel of MpsParameters::source_kernel over the same
+// neighbours (the weight's singular core reads disorder as compression; docs/mps.md).
 //
 // The list it reads holds the step's motion (pairs within r_e + 2.5 cfl l0 at x^k); from x* on
 // only the pairs within r_e count. This system narrows the list to r_e at x* in the same pass
@@ -59,7 +61,8 @@ class MpsNumberDensity final : public System<D> {
       double sum = 0;
       for (std::uint32_t k = 0; k < count; ++k) sum += w[k];
       n[i] = sum;
-      rho[i] = p_.rho0 * sum / p_.n0;
+      rho[i] = p_.smooth_source ? p_.rho0 * p_.source_kernel.wendland_sum(r2, count) / p_.source_n0
+                                : p_.rho0 * sum / p_.n0;
       role[i] = sum < p_.surface_threshold * p_.n0 ? kPressureSurface : kPressureUnknown;
     };
     filter_rows<D, true>(domain, p_.weight.support(), x, list, narrowed_, row);

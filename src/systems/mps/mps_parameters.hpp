@@ -30,6 +30,12 @@ struct MpsParameters {
   double n0 = 1, lambda0 = 1;
   double surface_threshold = 0.97;  // beta in n* < beta n0
   double relaxation = 0.2;          // gamma on the Poisson source
+  // The density of the Poisson source: n* with the weight (the BMG paper's), or the smooth kernel
+  // sum of `source_kernel` (Wendland C2 within r_e) against its lattice value source_n0
+  // (set_source_kernel; docs/mps.md, "The source's density").
+  bool smooth_source = false;
+  Kernel<D> source_kernel{KernelType::WendlandC2, 1.0};
+  double source_n0 = 1;
   bool clamp_negative_pressure = true;
   double cfl = 0.2;
   double reference_speed = 1;  // sqrt(2 g H): bounds the first steps' dt before anything moves
@@ -43,6 +49,12 @@ struct MpsParameters {
     auto ref = mps_reference<D>(weight, spacing);
     n0 = ref.n0;
     lambda0 = ref.lambda0;
+  }
+  // The smooth source's kernel: Wendland C2 with support `fraction` * r_e.
+  void set_source_kernel(double fraction) {
+    smooth_source = true;
+    source_kernel = Kernel<D>(KernelType::WendlandC2, 0.5 * fraction * weight.support());
+    source_n0 = mps_reference<D>(source_kernel, spacing).n0;
   }
   double laplacian_coefficient() const { return 2.0 * D / (lambda0 * n0); }
 };

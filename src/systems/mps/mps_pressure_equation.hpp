@@ -5,8 +5,10 @@
 // for every particle whose pressure is unknown (fluid and wall particles below the surface).
 // Neighbours on the free surface carry p = 0 (they add to the diagonal only); dummy particles
 // carry no pressure and are left out, as in Koshizuka's MPS. gamma is the source relaxation
-// (0.2 in the paper's dam break). A is symmetric positive definite when every connected group
-// of unknowns touches the surface (a closed, completely filled container would be singular).
+// (0.2 in the paper's dam break). With the smooth source (the scene's default) (n*_i - n0)/n0
+// is (rho*_i - rho0)/rho0, the density of mps_number_density from a smooth kernel. A is symmetric positive
+// definite when every connected group of unknowns touches the surface (a closed, completely filled container
+// would be singular).
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -31,8 +33,9 @@ class MpsPressureEquation final : public System<D> {
   std::string name() const override { return "ppe_assembly"; }
   Access access() const override {
     return Access{}
-        .read(components::position, components::number_density, components::pressure_role, components::id,
-              components::kind, neighbours_resource, mps_pair_weights_resource, resources::dt_chosen)
+        .read(components::position, components::number_density, components::density,
+              components::pressure_role, components::id, components::kind, neighbours_resource,
+              mps_pair_weights_resource, resources::dt_chosen)
         .write(pressure_system_resource);
   }
   void initialise(World<D>&, Resources& res) override { res.ensure(pressure_system_resource); }
@@ -46,6 +49,7 @@ class MpsPressureEquation final : public System<D> {
     const double* weight = ctx.read(mps_pair_weights_resource).of(nl, "ppe_assembly");
     auto x = ctx.read(components::position);
     auto n = ctx.read(components::number_density);
+    auto rho = ctx.read(components::density);
     auto role = ctx.read(components::pressure_role);
     auto& sys = ctx.write(pressure_system_resource);
     const double c = p_.laplacian_coefficient();
@@ -116,7 +120,7 @@ class MpsPressureEquation final : public System<D> {
         A.val[diagonal_slot] = diagonal;
         if (!sorted) sort_row(A, r, unsorted_row);
         if (!(diagonal > 0) || !std::isfinite(diagonal)) bad_row = std::min<std::size_t>(bad_row, r);
-        sys.b[r] = source * (n[i] - p_.n0);
+        sys.b[r] = p_.smooth_source ? source * p_.n0 * (rho[i] / p_.rho0 - 1) : source * (n[i] - p_.n0);
         for (int a = 0; a < D; ++a) sys.coordinates[r * D + a] = x[i][a];
       }
       for (auto seen = bad_row_found.load();
