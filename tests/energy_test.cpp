@@ -21,8 +21,8 @@
 // 1.190 s, 0.101 m of the wave left after two periods: the last at its bound (source_support 0.8,
 // 0.85, 0.95: 0.080, 0.096, 0.090 m; H/d = 40: 0.106 m; docs/mps.md). With the BMG paper's
 // number-density source MPS gains 4.1 J (18% of A) in the first quarter period and keeps 0.089 m:
-// the MPS weight reads disorder as compression, so holding n* = n0 lets the water spread (0.7% in
-// area by t = 0.3 s) and its centre of mass rise. (Until 2026-11-26 the scene fixed
+// the MPS weight reads disorder as compression, so holding n* = n0 lets the water spread (0.9% in
+// mean Voronoi cell by t = 0.3 s) and its centre of mass rise. (Until 2026-11-26 the scene fixed
 // smoothing_ratio = 1.5, which gave MPS r_e = 1.5 l0: it gained 16 J, 69% of A.) The ISPH paper
 // set-up gains 320 J and stops at t = 1.26 s (a particle thrown out of the domain). The known
 // failures are marked should_fail: they pass while the defect is there and turn red, to be

@@ -5,7 +5,7 @@
 // for every particle whose pressure is unknown (fluid and wall particles below the surface).
 // Neighbours on the free surface carry p = 0 (they add to the diagonal only); dummy particles
 // carry no pressure and are left out, as in Koshizuka's MPS. gamma is the source relaxation
-// (0.2 in the paper's dam break). With the smooth source (the scene's default) (n*_i - n0)/n0
+// (0.2 in the paper's dam break). With the smooth source (the 2D default) (n*_i - n0)/n0
 // is (rho*_i - rho0)/rho0, the density of mps_number_density from a smooth kernel. A is symmetric positive
 // definite when every connected group of unknowns touches the surface (a closed, completely filled container
 // would be singular).
