@@ -122,16 +122,17 @@ test::EnergySeries run_tank(const std::string& label, int periods, double spacin
 
 // The two measures over the first `periods` periods of a run.
 Growth measure(const std::string& label, const test::EnergySeries& e, int periods) {
-  std::vector<double> samples, kinetic, period_means;
-  for (std::size_t s = 0; s < e.time.size() && e.time[s] <= periods * kPeriod; ++s)
+  std::vector<double> samples, kinetic, period_sums(periods, 0.0);
+  std::vector<int> period_counts(periods, 0);
+  for (std::size_t s = 0; s < e.time.size() && e.time[s] <= periods * kPeriod; ++s) {
     samples.push_back(e.total[s]), kinetic.push_back(e.kinetic[s]);
+    const int k = static_cast<int>(e.time[s] / kPeriod);
+    if (k < periods) period_sums[k] += e.total[s], ++period_counts[k];
+  }
+  std::vector<double> period_means;
   for (int k = 0; k < periods; ++k) {
-    double sum = 0;
-    int n = 0;
-    for (std::size_t s = 0; s < samples.size(); ++s)
-      if (e.time[s] >= k * kPeriod && e.time[s] < (k + 1) * kPeriod) sum += samples[s], ++n;
-    REQUIRE(n > 0);
-    period_means.push_back(sum / n);
+    REQUIRE(period_counts[k] > 0);
+    period_means.push_back(period_sums[k] / period_counts[k]);
   }
   Growth g;
   g.sample_rise = largest_rise_above_running_minimum(samples);
