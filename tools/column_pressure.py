@@ -5,7 +5,7 @@ In every frame: the fluid particles within 0.6 d of x = `--x` (0.1 m: the middle
 column), those of them below 2 d (the floor's two rows), their mean pressure over rho g times
 the height of the water above them (the highest particle there + d/2 minus their mean height).
 The column just released holds about a third of that; as it spreads the ratio climbs towards
-one (MPS, WCSPH and ISPH with the corrected gradient agree on it to t = 0.2 s at a/d = 40).
+one (MPS, WCSPH and ISPH agree on it to t = 0.2 s at a/d = 40; docs/isph.md).
 Printed as means (with the least and largest frame) over windows of `--window` seconds, so run
 with frames close together (`--set output.interval=0.0005`): the ISPH pressure changes from step
 to step.
