@@ -208,3 +208,35 @@ TEST_CASE("patch test: an unknown operator is refused and the order fit is exact
   CHECK_THROWS_AS(run_patch_test(o), std::invalid_argument);
   CHECK(least_squares_order({0.1, 0.05, 0.025}, {1e-2, 2.5e-3, 6.25e-4}) == doctest::Approx(2.0));
 }
+
+// ISPH's hybrid gradient asks for the corrected gradient only where det M_i reaches a bound. On
+// the disordered cloud the interior reaches 0.8 and gets the exact gradient of a linear field; a
+// particle at the cloud's corner has a quarter of a support (det M_i far below 0.8) and gets
+// nothing, so the corrector takes the symmetric form there.
+TEST_CASE(
+    "operators: the corrected gradient where det M_i reaches a bound, nothing where the support is cut") {
+  Cloud<2> c(0.05, 0.2);
+  auto v = c.view();
+  std::vector<double> linear(c.x.size());
+  for (std::size_t i = 0; i < c.x.size(); ++i) linear[i] = 0.3 * c.x[i][0] - 1.7 * c.x[i][1];
+  std::size_t interior = 0, cut = 0;
+  for (std::size_t i = 0; i < c.x.size(); ++i) {
+    const double det = moment_matrix(gathered_stencil(v, i)).determinant();
+    auto g = gradient_corrected_where(v, linear, i, 0.8);
+    CHECK(g.has_value() == (det >= 0.8));
+    if (c.interior(i)) {
+      ++interior;
+      REQUIRE(g.has_value());
+      CHECK((*g - Vec<2>(0.3, -1.7)).norm() < 1e-10);
+    }
+    if (!g) {
+      ++cut;
+      CHECK_FALSE(c.interior(i));
+    }
+  }
+  MESSAGE(interior, " interior particles, ", cut, " with a support too cut for the corrected form");
+  CHECK(interior > 100);
+  CHECK(cut > 0);
+  const std::size_t corner = 0;  // the lattice's first point, at (d/2, d/2) before the disorder
+  CHECK_FALSE(gradient_corrected_where(v, linear, corner, 0.8).has_value());
+}

@@ -54,7 +54,10 @@ IsphParameters<D> isph_parameters(const Scene& s) {
                                                      : IsphDescription::Ale;
   p.ppe_laplacian = laplacian_order(s.ppe_laplacian);
   p.viscous_laplacian = laplacian_order(s.viscous_laplacian);
-  p.symmetric_gradient = s.pressure_gradient == "symmetric";
+  p.pressure_gradient = s.pressure_gradient == "symmetric" ? PressureGradientForm::Symmetric
+                        : s.pressure_gradient == "hybrid"  ? PressureGradientForm::Hybrid
+                                                           : PressureGradientForm::Corrected;
+  p.symmetric_gradient_det = s.symmetric_gradient_det;
   p.uncorrected_divergence_det = s.uncorrected_divergence_det;
   p.compression_relaxation = s.compression_relaxation;
   p.extrapolated_surface = s.free_surface_pressure == "extrapolated";

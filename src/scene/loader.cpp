@@ -277,6 +277,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.viscous_laplacian = *get("method", "viscous_laplacian").value<std::string>();
   sc.pressure_gradient = *get("method", "pressure_gradient").value<std::string>();
   sc.uncorrected_divergence_det = *get("method", "uncorrected_divergence_det").value<double>();
+  sc.symmetric_gradient_det = *get("method", "symmetric_gradient_det").value<double>();
   sc.free_surface_pressure = *get("method", "free_surface_pressure").value<std::string>();
   sc.isph_wall_rows = *get("method", "wall_rows").value<std::string>();
   sc.isph_confined = *get("method", "confined").value<bool>();

@@ -193,6 +193,7 @@ struct Scene {
   std::string isph_description = "ale", ppe_laplacian = "corrected", viscous_laplacian = "corrected",
               pressure_gradient = "corrected";
   double uncorrected_divergence_det = 0.8;
+  double symmetric_gradient_det = 0.8;
   std::string free_surface_pressure = "extrapolated";
   bool isph_confined = false;  // no free surface: the fluid fills its walls (a pipe)
   // [shifting]

@@ -28,6 +28,11 @@ inline constexpr Resource<NeighbourList> pressure_neighbours_resource{"pressure_
 // eulerian: particles stay (w = 0) and the predictor carries the convective term.
 enum class IsphDescription { Lagrangian, Ale, Eulerian };
 
+// The corrector's pressure gradient: corrected (eq. 9), symmetric (I-SPH(2) eq. 11), or hybrid:
+// corrected where det M_i >= symmetric_gradient_det, symmetric where the support is cut (the
+// surface, spray, the box's corners). See IsphPressureCorrection.
+enum class PressureGradientForm { Corrected, Symmetric, Hybrid };
+
 template <int D>
 struct IsphParameters {
   Kernel<D> kernel{KernelType::CubicSpline, 1.0};
@@ -38,7 +43,8 @@ struct IsphParameters {
   double nu = 0;  // kinematic viscosity
   IsphDescription description = IsphDescription::Ale;
   LaplacianOrder ppe_laplacian = LaplacianOrder::Corrected, viscous_laplacian = LaplacianOrder::Corrected;
-  bool symmetric_gradient = false;
+  PressureGradientForm pressure_gradient = PressureGradientForm::Corrected;
+  double symmetric_gradient_det = 0.8;
   double uncorrected_divergence_det = 0.8;
   // alpha of the stabilised source (Asai et al. 2012) where the particles are compressed.
   double compression_relaxation = 0.0;

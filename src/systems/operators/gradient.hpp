@@ -5,8 +5,11 @@
 //              rho_i sum_j m_j (f_i/rho_i^2 + f_j/rho_j^2) gW_ij at uniform density; conserves
 //              momentum pairwise but is not consistent even to zeroth order on a cut support)
 //   corrected  L_i sum_j V_j (f_j - f_i) gW_ij                  (ISPH eqs. 9-10; exact for linear f)
+//              (gradient_corrected_where: only where det M_i reaches a bound)
 //   mps        d/n0 sum_j (f_j - f_i) r_ij / |r_ij|^2 w_ij      (MPS, with f_i in place of the
 //              local minimum so that the operator is linear)
+#include <algorithm>
+#include <optional>
 #include <vector>
 
 #include "ecs/outer_sum.hpp"
@@ -28,9 +31,15 @@ Vec<D> gradient_symmetric(const ParticleView<D>& v, std::span<const double> f, s
   return g;
 }
 
+// The standard gradient and the moment matrix M_i = L_i^-1 of its support, in one pass.
 template <int D>
-Vec<D> gradient_corrected(const ParticleView<D>& v, std::span<const double> f, std::size_t i) {
-  // One pass gathers both the moment matrix and the uncorrected gradient.
+struct GradientMoments {
+  Vec<D> standard;
+  Mat<D> moments;
+};
+
+template <int D>
+GradientMoments<D> gradient_moments(const ParticleView<D>& v, std::span<const double> f, std::size_t i) {
   OuterSum<D> moments;
   Vec<D> g = Vec<D>::Zero();
   for (auto j : v.neighbours.of(i)) {
@@ -38,8 +47,23 @@ Vec<D> gradient_corrected(const ParticleView<D>& v, std::span<const double> f, s
     moments.add(gw, r);
     g += (f[j] - f[i]) * gw;
   }
-  const Mat<D> M = moments.matrix();
+  return {g, moments.matrix()};
+}
+
+template <int D>
+Vec<D> gradient_corrected(const ParticleView<D>& v, std::span<const double> f, std::size_t i) {
+  const auto [g, M] = gradient_moments(v, f, i);
   return M.determinant() > kMinRenormalisationDeterminant ? Vec<D>(M.inverse() * g) : g;
+}
+
+// The corrected gradient where the support is full enough to trust L_i (det M_i >= min_det),
+// nothing elsewhere: the caller chooses the form for cut supports (ISPH's hybrid gradient).
+template <int D>
+std::optional<Vec<D>> gradient_corrected_where(const ParticleView<D>& v, std::span<const double> f,
+                                               std::size_t i, double min_det) {
+  const auto [g, M] = gradient_moments(v, f, i);
+  if (M.determinant() < std::max(min_det, kMinRenormalisationDeterminant)) return std::nullopt;
+  return Vec<D>(M.inverse() * g);
 }
 
 template <int D>
