@@ -133,6 +133,24 @@ TEST_CASE("mps: dam break with MGCG and DCG gives the same flow") {
   MESSAGE("mean iterations per solve: MGCG ", it_mg, ", DCG ", it_dcg);
   CHECK(it_mg < 0.5 * it_dcg);  // measured 17 vs 139
   CHECK(test::json_raw(sa, "krylov") == "cg");  // the MPS Laplacian is symmetric
+  // The solve's memory per particle in summary.json (the largest step's): the CSR matrix holds at
+  // 12 bytes per nonzero (value and column) and 36 per row (row pointer, right-hand side, two
+  // coordinates, row map), Jacobi's inverse diagonal 8 bytes per unknown, the multigrid's
+  // hierarchy more than that, and CG 5 work vectors plus the solution (measured 382, 8, 226, 48).
+  auto per_unknown = [](const std::string& s, const char* key) {
+    return test::json_number(s, key) * test::json_number(s, "particles") /
+           test::json_number(s, "max_unknowns");
+  };
+  const double nnz_per_unknown =
+      test::json_number(sb, "max_nonzeros") / test::json_number(sb, "max_unknowns");
+  MESSAGE("bytes per unknown: matrix ", per_unknown(sb, "pressure_matrix"), " (", nnz_per_unknown,
+          " nonzeros), Jacobi ", per_unknown(sb, "pressure_preconditioner"), ", multigrid ",
+          per_unknown(sa, "pressure_preconditioner"), ", CG vectors ",
+          per_unknown(sa, "pressure_krylov_vectors"));
+  CHECK(per_unknown(sb, "pressure_matrix") == doctest::Approx(12 * nnz_per_unknown + 36).epsilon(0.01));
+  CHECK(per_unknown(sb, "pressure_preconditioner") == doctest::Approx(8.0));
+  CHECK(per_unknown(sa, "pressure_preconditioner") > 8.0);
+  CHECK(per_unknown(sa, "pressure_krylov_vectors") == doctest::Approx(6 * 8.0));
 }
 
 TEST_CASE("mps: dam break runs past the far-wall impact and keeps its density") {

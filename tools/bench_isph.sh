@@ -18,8 +18,10 @@ for pc in multigrid jacobi; do
   rate[$pc]=$(/usr/bin/python3 -c "
 import json; s = json.load(open('$out/summary.json')); l = s['linear_solver']; b = s['bytes_per_particle']
 print('%.4g' % s['particle_steps_per_second'])
-import sys; print('particles %d, steps %d, mean iterations %.1f, max %d, bytes/particle: columns %d + neighbour list %.0f'
-  % (s['particles'], s['steps'], l['mean_iterations'], l['max_iterations'], b['columns'], b['neighbour_list']), file=sys.stderr)")
+import sys; parts = ('columns', 'neighbour_list', 'pressure_matrix', 'pressure_preconditioner', 'pressure_krylov_vectors')
+print('particles %d, steps %d, mean iterations %.1f, max %d, bytes/particle: %s = %.0f'
+  % (s['particles'], s['steps'], l['mean_iterations'], l['max_iterations'],
+     ' + '.join('%s %.0f' % (k, b[k]) for k in parts if k in b), sum(b.get(k, 0) for k in parts)), file=sys.stderr)")
   echo "particle-steps/s ${rate[$pc]}"
   rm -rf "$out"
 done

@@ -543,6 +543,14 @@ class Runner {
     w.key("bytes_per_particle").begin_object();
     w.key("columns").value(static_cast<std::int64_t>(world_.bytes_per_particle()));
     w.key("neighbour_list").value(world_.size() ? double(nl.bytes()) / world_.size() : 0.0);
+    if (res_.has(solve_statistics_resource.name) && world_.size()) {
+      // The pressure solve's memory at its largest step, per particle of the world (MPS, ISPH).
+      const auto& st = res_.get(solve_statistics_resource);
+      const double n = double(world_.size());
+      w.key("pressure_matrix").value(st.max_matrix_bytes / n);
+      w.key("pressure_preconditioner").value(st.max_preconditioner_bytes / n);
+      w.key("pressure_krylov_vectors").value(st.max_krylov_bytes / n);
+    }
     w.end_object();
     w.key("parameters").begin_object();
     w.key("spacing").value(scene_.spacing);

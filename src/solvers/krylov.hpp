@@ -52,6 +52,11 @@ class JacobiPreconditioner final : public Preconditioner {
   std::vector<double> inverse_diagonal_;
 };
 
+// The n-vectors each method holds at its peak (the residual check's A x included), for the
+// memory accounting of summary.json: CG r, z, p, q; BiCGSTAB r, r0, p, v, s, t, y, z.
+inline constexpr int kConjugateGradientWorkVectors = 5;
+inline constexpr int kBicgstabWorkVectors = 9;
+
 SolveStatus conjugate_gradient(const CsrMatrix<double>& A, std::span<const double> b, std::span<double> x,
                                const Preconditioner& M, const SolveOptions& options = {});
 SolveStatus bicgstab(const CsrMatrix<double>& A, std::span<const double> b, std::span<double> x,

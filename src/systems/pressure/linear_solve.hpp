@@ -37,12 +37,14 @@ class LinearSolve final : public System<D> {
       for (std::size_t r = 0; r < rows; ++r) x_[r] = p[sys.particle_of_row[r]];
     solvers::SolveStatus status;
     status.converged = true;
+    std::size_t preconditioner_bytes = 0;
     status.relative_residual = 0;
     if (rows > 0) {
       const solvers::Preconditioner* M = &identity_;
       if (spec_.preconditioner != "none") {
         const auto& pre = ctx.read(preconditioner_resource);
         if (pre.M) M = pre.M.get();
+        preconditioner_bytes = pre.bytes;
       }
       solvers::SolveOptions o{spec_.tolerance, spec_.max_iterations};
       const bool bicgstab = spec_.krylov == "bicgstab" || !sys.symmetric;
@@ -92,6 +94,16 @@ class LinearSolve final : public System<D> {
     stats.max_relative_residual = std::max(stats.max_relative_residual, status.relative_residual);
     stats.max_rows = std::max(stats.max_rows, rows);
     stats.max_nonzeros = std::max(stats.max_nonzeros, sys.A.nonzeros());
+    const std::size_t matrix_bytes = sys.A.bytes() +
+                                     (sys.b.size() + sys.coordinates.size()) * sizeof(double) +
+                                     sys.particle_of_row.size() * sizeof(std::uint32_t);
+    const int work =
+        stats.krylov == "bicgstab" ? solvers::kBicgstabWorkVectors : solvers::kConjugateGradientWorkVectors;
+    const std::size_t krylov_bytes =
+        (work * rows + x_.capacity() + uniform_.capacity() + z_.capacity()) * sizeof(double);
+    stats.max_matrix_bytes = std::max(stats.max_matrix_bytes, matrix_bytes);
+    stats.max_preconditioner_bytes = std::max(stats.max_preconditioner_bytes, preconditioner_bytes);
+    stats.max_krylov_bytes = std::max(stats.max_krylov_bytes, krylov_bytes);
   }
 
  private:

@@ -46,6 +46,10 @@ struct LinearSolveStatistics {
   int max_iterations = 0;
   double max_relative_residual = 0;
   std::size_t max_rows = 0, max_nonzeros = 0;
+  // The largest memory of one step's solve, in bytes: the assembled system (CSR matrix, right-hand
+  // side, coordinates, row map), the preconditioner (multigrid hierarchy or inverse diagonal) and
+  // the Krylov method's vectors with the solution.
+  std::size_t max_matrix_bytes = 0, max_preconditioner_bytes = 0, max_krylov_bytes = 0;
   std::string krylov;  // the method the solves used (a non-symmetric system takes BiCGSTAB)
 };
 
