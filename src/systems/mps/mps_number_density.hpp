@@ -55,8 +55,8 @@ class MpsNumberDensity final : public System<D> {
         role[i] = kPressureNone;
         return;
       }
-      const auto count = narrowed_.count(i);
-      double* w = weight + narrowed_.offsets[i];
+      const auto count = list.count(i);
+      double* w = weight + list.offsets[i];
       p_.weight.mps_weights(r2, w, count);
       double sum = 0;
       for (std::uint32_t k = 0; k < count; ++k) sum += w[k];
@@ -65,13 +65,11 @@ class MpsNumberDensity final : public System<D> {
                                 : p_.rho0 * sum / p_.n0;
       role[i] = sum < p_.surface_threshold * p_.n0 ? kPressureSurface : kPressureUnknown;
     };
-    filter_rows<D, true>(domain, p_.weight.support(), x, list, narrowed_, row);
-    adopt_narrowed(list, narrowed_);
+    filter_rows<D, true>(domain, p_.weight.support(), x, list, list, row);  // in place
   }
 
  private:
   MpsParameters<D> p_;
-  NeighbourList narrowed_;
 };
 
 }  // namespace ryushi

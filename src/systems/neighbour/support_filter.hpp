@@ -30,13 +30,11 @@ class SupportFilter final : public System<D> {
     auto x = ctx.read(components::position);
     const auto& domain = ctx.read(domain_resource<D>);
     auto& list = ctx.write(neighbours_resource);
-    filter_neighbour_list<D>(domain, support_, x, list, narrowed_);
-    adopt_narrowed(list, narrowed_);
+    filter_neighbour_list<D>(domain, support_, x, list, list);  // in place
   }
 
  private:
   double support_;
-  NeighbourList narrowed_;
 };
 
 }  // namespace ryushi
