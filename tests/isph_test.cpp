@@ -7,13 +7,15 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <string>
 #include <numbers>
+#include <string>
 
 #include "app/exit_codes.hpp"
 #include "app/run.hpp"
 #include "h5_read.hpp"
 #include "shipped_scene_run.hpp"
+#include "systems/isph/compression_density.hpp"
+#include "systems/neighbour/neighbour_search.hpp"
 #include "systems/shifting/density_shifting.hpp"
 #include "test_util.hpp"
 
@@ -195,6 +197,54 @@ TEST_CASE("isph: the shifting constant beta follows from its definition") {
   CHECK(beta == doctest::Approx(1 / sum).scale(0).epsilon(1e-12));
 }
 
+// The stabilised source's density error (compression_density.hpp) on a lattice of water over a
+// one-layer floor, scaled by s: the density is s^-2 times the lattice's. first_shell answers
+// compression only; full_support reads both ways (the floor's missing layers completed), a
+// dilation at most 1%, and falls back to first_shell where the support holds a surface particle.
+TEST_CASE("isph: the compression error reads a dilation both ways only over a full support") {
+  const Kernel<2> kernel(KernelType::CubicSpline, 1.2);
+  auto error_at = [&](double scale, CompressionDensity measure, Vec<2> at) {
+    std::vector<Vec<2>> x;
+    std::vector<std::int32_t> kind, surface;
+    std::vector<Vec<2>> normal;
+    for (int a = -6; a < 26; ++a) {  // the floor: one layer at y = -0.5, normals into the wall
+      x.push_back(scale * Vec<2>(a + 0.5, -0.5)), kind.push_back(kWall), surface.push_back(0);
+      normal.push_back(Vec<2>(0, -1));
+    }
+    for (int a = 0; a < 20; ++a)
+      for (int b = 0; b < 12; ++b) {
+        x.push_back(scale * Vec<2>(a + 0.5, b + 0.5)), kind.push_back(kFluid), surface.push_back(b == 11);
+        normal.push_back(Vec<2>::Zero());
+      }
+    std::vector<double> volume(x.size(), 1.0);
+    Domain<2> domain;
+    CellGrid<2> grid;
+    NeighbourList nl;
+    build_neighbour_list<2>(domain, kernel.support(), x, grid, nl);
+    ParticleView<2> view{x, volume, nl, kernel, domain};
+    std::size_t i = 0;
+    while ((x[i] - scale * at).norm() > 1e-9) ++i;
+    Stencil<2> stencil;
+    stencil.gather(view, i);
+    return CompressionError<2>(kernel, 1.0, measure)(stencil, kind, surface, normal);
+  };
+  const Vec<2> interior(10.5, 5.5), on_floor(10.5, 0.5), under_surface(10.5, 9.5);
+  for (auto measure : {CompressionDensity::FirstShell, CompressionDensity::FullSupport})
+    for (auto at : {interior, on_floor, under_surface}) CHECK(std::abs(error_at(1.0, measure, at)) < 1e-12);
+  // 0.1% apart: the density 0.2% lower, or higher. The kernel sum follows the density to within
+  // a hundredth of the change (measured -0.1979% and +0.1985% against -0.1998% and +0.2003%).
+  const double dilated = error_at(1.001, CompressionDensity::FullSupport, interior);
+  const double compressed = error_at(0.999, CompressionDensity::FullSupport, interior);
+  MESSAGE("full support: dilated 0.1% reads ", dilated, ", compressed ", compressed);
+  CHECK(dilated == doctest::Approx(std::pow(1.001, -2) - 1).epsilon(0.02));
+  CHECK(compressed == doctest::Approx(std::pow(0.999, -2) - 1).epsilon(0.02));
+  CHECK(error_at(1.001, CompressionDensity::FullSupport, on_floor) == doctest::Approx(dilated).epsilon(0.02));
+  CHECK(error_at(1.001, CompressionDensity::FirstShell, interior) == 0.0);
+  CHECK(error_at(0.999, CompressionDensity::FirstShell, interior) > 0.0);
+  CHECK(error_at(1.001, CompressionDensity::FullSupport, under_surface) == 0.0);  // the first shell's
+  CHECK(error_at(1.05, CompressionDensity::FullSupport, interior) == -CompressionError<2>::kDilationCap);
+}
+
 TEST_CASE("isph: bad method and shifting keys exit 2 with the place") {
   auto dir = test::scratch("isph_bad");
   const std::string base = test::block_scene("[0.2, 0.2]", "[0.6, 0.6]", 0.1, "[method]\nname = \"isph\"\n");
@@ -208,6 +258,8 @@ TEST_CASE("isph: bad method and shifting keys exit 2 with the place") {
   check("[shifting]\nmodel = \"fick\"\n", "'model' in [shifting] is 'fick'");
   check("wall_rows = \"shepherd\"\n", "bad.toml:15:13: 'wall_rows' in [method] is 'shepherd'");
   check("compression_relaxation = -0.1\n", "'compression_relaxation' in [method] is -0.1");
+  check("compression_density = \"support\"\n",
+        "bad.toml:15:23: 'compression_density' in [method] is 'support'");
   check("[shifting]\nfickian_coefficient = -2.0\n", "'fickian_coefficient' in [shifting] is -2");
   check("[shifting]\nmax_shift = 1.5\n", "'max_shift' in [shifting] is 1.5");
   check("[shifting]\ncoefficient = -1.0\n", "'coefficient' in [shifting] is -1");

@@ -60,6 +60,8 @@ IsphParameters<D> isph_parameters(const Scene& s) {
   p.symmetric_gradient_det = s.symmetric_gradient_det;
   p.uncorrected_divergence_det = s.uncorrected_divergence_det;
   p.compression_relaxation = s.compression_relaxation;
+  p.compression_density = s.compression_density == "full_support" ? CompressionDensity::FullSupport
+                                                                  : CompressionDensity::FirstShell;
   p.extrapolated_surface = s.free_surface_pressure == "extrapolated";
   p.wall_no_slip = !s.wall_slip;
   p.wall_shepard = s.isph_wall_rows == "shepard";

@@ -282,6 +282,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.isph_wall_rows = *get("method", "wall_rows").value<std::string>();
   sc.isph_confined = *get("method", "confined").value<bool>();
   sc.compression_relaxation = *get("method", "compression_relaxation").value<double>();
+  sc.compression_density = *get("method", "compression_density").value<std::string>();
   sc.shifting_model = root["shifting"]["model"].value_or(std::string(isph ? "density" : "none"));
   if (sc.method == "wcsph" && sc.shifting_model == "density")
     val.fail(root["shifting"]["model"].node(), "shifting.model",

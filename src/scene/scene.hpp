@@ -201,6 +201,7 @@ struct Scene {
   double shifting_coefficient = 0.005;
   std::string isph_wall_rows = "corrected";
   double compression_relaxation = 0.0;
+  std::string compression_density = "first_shell";
   double fickian_coefficient = 2.0, anti_clumping = 0.2, max_shift = 0.2, xsph_epsilon = 0.5;
   SolverSpec solver;
   SweSpec swe;

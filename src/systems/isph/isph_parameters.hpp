@@ -6,6 +6,7 @@
 
 #include "ecs/component.hpp"
 #include "ecs/math.hpp"
+#include "systems/isph/compression_density.hpp"
 #include "systems/kernels/kernel.hpp"
 #include "systems/neighbour/domain.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
@@ -46,8 +47,9 @@ struct IsphParameters {
   PressureGradientForm pressure_gradient = PressureGradientForm::Corrected;
   double symmetric_gradient_det = 0.8;
   double uncorrected_divergence_det = 0.8;
-  // alpha of the stabilised source (Asai et al. 2012) where the particles are compressed.
+  // alpha of the stabilised source (Asai et al. 2012), and the density error it answers.
   double compression_relaxation = 0.0;
+  CompressionDensity compression_density = CompressionDensity::FirstShell;
   double relaxation_time = 0.0;  // cfl d / max(sqrt(2 g H), initial speed): the step of the flow at rest
   bool extrapolated_surface = true;  // p = 0 half a spacing outside a surface particle
   bool wall_no_slip = true;

@@ -34,13 +34,13 @@
 #include "ecs/system.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/free_surface/free_surface_detection.hpp"
+#include "systems/isph/compression_density.hpp"
 #include "systems/isph/isph_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/operators/gradient.hpp"
 #include "systems/operators/laplacian_choice.hpp"
 #include "systems/pressure/pressure_gauge.hpp"
 #include "systems/pressure/pressure_system.hpp"
-#include "systems/shifting/density_shifting.hpp"  // shifting_beta
 
 namespace ryushi {
 
@@ -48,7 +48,7 @@ template <int D>
 class IsphPressureEquation final : public System<D> {
  public:
   explicit IsphPressureEquation(const IsphParameters<D>& p)
-      : p_(p), beta_(shifting_beta(p.kernel, p.spacing)) {}
+      : p_(p), compression_error_(p.kernel, p.spacing, p.compression_density) {}
   std::string name() const override { return "ppe_assembly"; }
   Access access() const override {
     Access a;
@@ -249,15 +249,12 @@ class IsphPressureEquation final : public System<D> {
           }
           rhs = -p_.rho0 / dt * div;
           if (p_.compression_relaxation > 0) {
-            // Stabilised ISPH (Asai et al. 2012): + alpha (<rho>_i - rho0) / dt^2 with the density of
-            // eq. 19 over S* (the first shell, which one wall layer fills), where it exceeds rho0
-            // only: the projection alone let the dam break's particles pair up (median neighbour
-            // distance 0.85 d) until the surge was a cloud of surface particles. Both ways, the
-            // deficit of a disordered support (not an expansion) held a 0.2 m pool at -6 kPa.
-            double sum = p_.kernel.w(0.0);
-            for (double len : stencil.len)
-              if (len <= shell) sum += p_.kernel.w(len);
-            const double excess = std::max(beta_ * std::pow(d, D) * sum - 1.0, 0.0);
+            // Stabilised ISPH (Asai et al. 2012): + alpha rho0 e_i / tau^2, e_i the density error of
+            // compression_density.hpp (eq. 19 over the first shell where it exceeds rho0, or the
+            // whole support's both ways). Without it the projection let the dam break's particles
+            // pair up (median neighbour distance 0.85 d) until the surge was a cloud of surface
+            // particles.
+            const double excess = compression_error_(stencil, kind, surface, normal);
             // Over the scene's reference step, not the step's own: with 1/dt^2 a particle
             // pressed against a wall in an impact got a pressure that grew as the step shrank,
             // which shrank the step further (the dam break at a/d = 40 blew up at t = 1.8 s).
@@ -399,7 +396,7 @@ class IsphPressureEquation final : public System<D> {
 
   static constexpr std::uint32_t kNoRow = UINT32_MAX;
   IsphParameters<D> p_;
-  double beta_;  // eq. 19: <rho> = rho0 on the lattice
+  CompressionError<D> compression_error_;
   std::vector<double> volume_;
   std::vector<Vec<D>> v_star_;
   std::vector<std::uint8_t> unknown_;

@@ -22,10 +22,10 @@
 #include <cmath>
 #include <vector>
 
-#include "ecs/lattice.hpp"
 #include "ecs/system.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/free_surface/free_surface_detection.hpp"
+#include "systems/kernels/lattice_kernel_sum.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/operators/gradient.hpp"
 #include "systems/shifting/shift_velocity.hpp"
@@ -48,18 +48,7 @@ struct ShiftingParameters {
 // beta of eq. 19: 1 / (d^D sum_{lattice points within d*} W), the centre included.
 template <int D>
 double shifting_beta(const Kernel<D>& kernel, double d) {
-  const double radius = 1.1 * std::sqrt(double(D)) * d;
-  const long reach = static_cast<long>(std::ceil(radius / d));
-  std::array<long, D> lo, hi;
-  lo.fill(-reach);
-  hi.fill(reach + 1);
-  double sum = 0;
-  for_each_lattice_index<D>(lo, hi, [&](const std::array<long, D>& k) {
-    double r2 = 0;
-    for (int a = 0; a < D; ++a) r2 += double(k[a] * k[a]) * d * d;
-    if (r2 <= radius * radius) sum += kernel.w(std::sqrt(r2));
-  });
-  return 1.0 / (std::pow(d, D) * sum);
+  return 1.0 / (std::pow(d, D) * lattice_kernel_sum(kernel, d, 1.1 * std::sqrt(double(D)) * d));
 }
 
 template <int D>
