@@ -43,7 +43,7 @@ set_tests_properties("stability: a WCSPH sloshing tank run for 200 periods never
 set_tests_properties("stability: an MPS sloshing tank never gains energy over 200 periods, its jitter falls with resolution"
                      PROPERTIES LABELS "stability;slow" COST 260)
 set_tests_properties("stability: an ISPH sloshing tank (violent-flow set-up, full-support compression) never gains energy over 200 periods at H/d = 20, its jitter falls with resolution"
-                     PROPERTIES LABELS "stability;slow" COST 400)
+                     PROPERTIES LABELS "stability;slow" COST 440)
 set_tests_properties("stability: a 2D tank of a million particles takes one step on one thread under WCSPH, MPS and ISPH"
                      PROPERTIES LABELS "stability;slow" COST 16)
 set_tests_properties("stability: WCSPH at a fixed step of 1x its acoustic limit keeps the tank, 2x keeps it or fails cleanly"
