@@ -22,8 +22,10 @@ int render_command(const RenderOptions& o) {
   }
   std::vector<std::string> args{python, script.string(), o.out_dir, "--field", o.field, "--frames", o.frames};
   if (o.movie) args.push_back("--movie");
+  // FLAG=VALUE in one argument: a range that starts below zero ("-2e4,2e4", a pressure) would
+  // otherwise read to argparse as an option of its own.
   for (auto [flag, value] : {std::pair{"--slice", &o.slice}, {"--range", &o.range}, {"--dest", &o.dest}})
-    if (!value->empty()) args.insert(args.end(), {flag, *value});
+    if (!value->empty()) args.push_back(std::string(flag) + "=" + *value);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
