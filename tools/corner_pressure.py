@@ -4,9 +4,10 @@ In every frame: the fluid particles left of `--column` (0.2 m: what is left of t
 the top of that water (its highest particle), and each particle's pressure above rho g times its
 depth under that top (the excess). Printed: how many particles lie within `--radius` of the
 corner (x, y) = (0, 0) and their mean excess, then the largest excess and the lowest over the
-column and where they are. A pressure mode that grows out of the corner (docs/isph.md, "The
-corner's pressure bursts") reads as a corner excess far above the rest, while the count falls as
-the corner empties. Frames whose column has a drop flying above it misread the top: read the
+column and where they are. The pressure mode that blows up ISPH's dam break at a/d = 200
+(docs/isph.md, "The column's pressure bursts") reads as a corner excess far above the rest, while
+the count falls as the corner empties; it flips sign every step, so frames sample it at random
+(a pressure probe at the corner with `output.probe_interval = 1e-6` follows it step by step). Frames whose column has a drop flying above it misread the top: read the
 lines before the surge's run-up falls back (t < 0.5 s at a = 0.25 m).
 
     /usr/bin/python3 tools/corner_pressure.py RUN_DIR [--from 0.2] [--column 0.2] [--radius 0.02]
