@@ -30,8 +30,8 @@ inline constexpr Resource<NeighbourList> pressure_neighbours_resource{"pressure_
 enum class IsphDescription { Lagrangian, Ale, Eulerian };
 
 // The corrector's pressure gradient: corrected (eq. 9), symmetric (I-SPH(2) eq. 11), or hybrid:
-// corrected where det M_i >= symmetric_gradient_det, symmetric where the support is cut (the
-// surface, spray, the box's corners). See IsphPressureCorrection.
+// symmetric where the free surface cuts the support (det M_i < symmetric_gradient_det and a
+// surface particle in it: the surface, spray), corrected elsewhere. See IsphPressureCorrection.
 enum class PressureGradientForm { Corrected, Symmetric, Hybrid };
 
 template <int D>
