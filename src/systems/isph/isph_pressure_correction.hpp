@@ -69,11 +69,11 @@ class IsphPressureCorrection final : public System<D> {
         grad[i] = gradient_corrected(view, p, i);
         return;
       }
-      if (p_.pressure_gradient == PressureGradientForm::Hybrid && !surface_in_support(i)) {
-        grad[i] = gradient_corrected(view, p, i);
-        return;
-      }
       if (p_.pressure_gradient == PressureGradientForm::Hybrid) {
+        if (!surface_in_support(i)) {
+          grad[i] = gradient_corrected(view, p, i);
+          return;
+        }
         if (auto g = gradient_corrected_where(view, p, i, p_.symmetric_gradient_det)) {
           grad[i] = *g;
           return;
