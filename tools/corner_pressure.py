@@ -7,8 +7,9 @@ corner (x, y) = (0, 0) and their mean excess, then the largest excess and the lo
 column and where they are. The pressure mode that blows up ISPH's dam break at a/d = 200
 (docs/isph.md, "The column's pressure bursts") reads as a corner excess far above the rest, while
 the count falls as the corner empties; it flips sign every step, so frames sample it at random
-(a pressure probe at the corner with `output.probe_interval = 1e-6` follows it step by step). Frames whose column has a drop flying above it misread the top: read the
-lines before the surge's run-up falls back (t < 0.5 s at a = 0.25 m).
+(a pressure probe at the corner with `output.probe_interval = 1e-6` follows it step by step).
+Frames whose column has a drop flying above it misread the top: read the lines before the
+surge's run-up falls back (t < 0.5 s at a = 0.25 m).
 
     /usr/bin/python3 tools/corner_pressure.py RUN_DIR [--from 0.2] [--column 0.2] [--radius 0.02]
 """
