@@ -187,12 +187,20 @@ std::vector<ShellParticle<D>> SolidShape<D>::container_shell(double d, const Vec
   });
   // The surface each first-layer particle stands for: a box face's lattice points d^(D-1) each
   // (its edges and corners, outside two faces, none); a round or mesh container's share of its
-  // surface, which the first layer's zigzag covers about evenly.
+  // surface, which the first layer's zigzag covers about evenly. (A mesh's first layer took
+  // d^(D-1) each until 2026-11-27: a sphere's zigzag has 17% more of them than its area holds,
+  // and the force on a vessel of water at rest read 17% over the water's weight.)
   std::size_t first = 0;
   for (auto& q : out) first += q.layer == 1;
   double share = std::pow(d, D - 1);
-  if (!mesh_ && spec_.shape != "box" && first > 0) {
-    share = round_surface() / first;
+  if (spec_.shape != "box" && first > 0) {
+    double surface = 0;
+    if (mesh_) {
+      if constexpr (D == 3) surface = mesh_->area();
+    } else {
+      surface = round_surface();
+    }
+    share = surface / first;
   }
   for (auto& q : out)
     if (q.layer == 1) q.area = (mesh_ || spec_.shape != "box" || q.normal.cwiseAbs().maxCoeff() > 1 - 1e-12) ? share : 0.0;

@@ -95,6 +95,9 @@ bool TriangleMesh::closed() const {
 double TriangleMesh::volume() const {
   return impl_->closed ? PMP::volume(impl_->mesh) : 0.0;
 }
+double TriangleMesh::area() const {
+  return PMP::area(impl_->mesh);
+}
 Vec<3> TriangleMesh::lower() const {
   return impl_->lower;
 }

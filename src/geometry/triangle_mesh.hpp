@@ -34,6 +34,7 @@ class TriangleMesh {
   // Closed (every edge shared by two faces): it bounds a volume, faces turned outward on reading.
   bool closed() const;
   double volume() const;  // closed meshes
+  double area() const;    // of the surface
   Vec<3> lower() const;
   Vec<3> upper() const;
   // Closed: strictly inside the volume. Open: behind the nearest face (against its normal).
