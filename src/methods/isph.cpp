@@ -11,7 +11,7 @@
 //   shifting_density, particle_shifting   ALE only: density-based shifting     (eqs. 19-25)
 //   time_step_control         CFL on the velocity and the viscous limit (no sound speed)
 // Fluid at rho0 with mass rho0 d^D; walls are the innermost layer of the scene's containers
-// with their normals (kind 1).
+// with their normals (kind 1), or with wall_rows = "adami" all the layers that cover the support.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -65,6 +65,8 @@ IsphParameters<D> isph_parameters(const Scene& s) {
   p.extrapolated_surface = s.free_surface_pressure == "extrapolated";
   p.wall_no_slip = !s.wall_slip;
   p.wall_shepard = s.isph_wall_rows == "shepard";
+  p.wall_adami = s.isph_wall_rows == "adami";
+  p.wall_acceleration = std::any_of(s.solids.begin(), s.solids.end(), [](const SolidSpec& b) { return b.moves(); });
   p.fixed_pressure = !s.fixed_pressure.empty();
   p.cfl = s.cfl;
   double u = std::sqrt(2.0 * s.gravity_magnitude() * s.fluid_height());
@@ -88,7 +90,7 @@ void populate_isph_world(const Scene& s, const IsphParameters<D>& p, World<D>& w
       [&](double depth, double given) {
         return std::pair{p.rho0, !std::isnan(given) ? given : s.hydrostatic_init ? p.rho0 * g_up * depth : 0.0};
       },
-      [](int) { return kWall; }, [](int layer) { return layer == 1; });
+      [](int) { return kWall; }, [&](int layer) { return layer == 1 || p.wall_adami; });
   // The normals of the kept (layer-1) wall particles, in the order they were appended.
   auto& normal = world.ensure(components::wall_normal);
   auto& kind = world.column(components::kind);

@@ -29,8 +29,9 @@ SceneParticles<D> scene_particles(const Scene& s) {
   // the fluid keeps a quarter spacing from its surface, so that every wall particle has water
   // within ISPH's wetted distance 1.1 sqrt(D) d (the lattice cut by a circle leaves gaps of up to
   // 0.7 d more; cut at half a spacing, as round bodies cut it, some walls saw none, p = 0, and the
-  // tank blew up at t = 0.4 s).
-  const bool ring_containers = s.method == "isph";
+  // tank blew up at t = 0.4 s). Only the Eulerian pipe keeps that ring now: with moving particles
+  // a round container takes wall_rows = "adami" and the lattice's layers, as the other methods.
+  const bool ring_containers = s.method == "isph" && s.isph_wall_rows != "adami";
   auto margin = [&](std::size_t k) {
     const SolidSpec& b = s.solids[k];
     if (!b.container) return 0.5 * d * (1 - 1e-9);

@@ -165,6 +165,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   for (auto& [k, node] : root) written.insert(std::string(k.str()));
   // Whether the scene names its integrator (before the defaults fill the tables in).
   const bool integrator_named = static_cast<bool>(root["method"]["integrator"]);
+  const bool wall_rows_named = static_cast<bool>(root["method"]["wall_rows"]);
   // The dimension first: vector lengths depend on it.
   {
     auto* scene_tbl = root["scene"].as_table();
@@ -280,6 +281,26 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.symmetric_gradient_det = *get("method", "symmetric_gradient_det").value<double>();
   sc.free_surface_pressure = *get("method", "free_surface_pressure").value<std::string>();
   sc.isph_wall_rows = *get("method", "wall_rows").value<std::string>();
+  // ISPH's one wall layer with normals is a zigzag on the lattice around a curve, and the ring
+  // that replaced it there was not stable (docs/isph.md, "Round and mesh containers"): a round
+  // or mesh container with moving particles takes the layers of the other methods and Adami's
+  // wall pressure as rows. The Eulerian pipe keeps its ring (no contact line, validated).
+  if (isph) {
+    bool curved_container = false;
+    if (auto* solids = root["solid"].as_array())
+      for (std::size_t i = 0; i < solids->size(); ++i)
+        curved_container = curved_container || (root["solid"][i]["container"].value_or(false) &&
+                                                root["solid"][i]["shape"].value_or(std::string("box")) != "box" &&
+                                                !(sc.isph_description == "eulerian" &&
+                                                  root["solid"][i]["shape"].value_or(std::string()) != "mesh"));
+    if (curved_container && !wall_rows_named) sc.isph_wall_rows = "adami";
+    if (curved_container && sc.isph_wall_rows != "adami")
+      val.fail(&get("method", "wall_rows"), "method.wall_rows",
+               "wall_rows = \"" + sc.isph_wall_rows +
+                   "\" keeps one wall layer with normals, which a round or mesh container does not hold stably (a "
+                   "half-full ball at rest blew up at t = 0.36 s); leave wall_rows out or set \"adami\"");
+  }
+  const bool isph_one_layer = isph && sc.isph_wall_rows != "adami";
   sc.isph_confined = *get("method", "confined").value<bool>();
   sc.compression_relaxation = *get("method", "compression_relaxation").value<double>();
   sc.compression_density = *get("method", "compression_density").value<std::string>();
@@ -537,8 +558,9 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       sc.wall_pressure_layers + static_cast<int>(std::floor(sc.support_radius() / sc.spacing + 1e-9));
   if (auto* arr = root["wall"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
-      // ISPH walls are one layer of particles with normals (ISPH paper section 4).
-      const int covering = isph ? 1 : static_cast<int>(std::ceil(sc.support_radius() / sc.spacing - 1e-9));
+      // ISPH walls are one layer of particles with normals (ISPH paper section 4), but with
+      // wall_rows = "adami" the layers of the other methods.
+      const int covering = isph_one_layer ? 1 : static_cast<int>(std::ceil(sc.support_radius() / sc.spacing - 1e-9));
       WallBox w{vec_of(*where("wall", i, "min")), vec_of(*where("wall", i, "max")),
                 static_cast<int>(root["wall"][i]["layers"].value_or(static_cast<long long>(covering))),
                 *root["wall"][i]["open_top"].value<bool>(), {}, {}};
@@ -558,10 +580,10 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       if (!inside(lo, hi))
         val.fail(where("wall", i, "min"), path_of("wall", i, "min"),
                  "[[wall]] #" + std::to_string(i) + " with its " + std::to_string(w.layers) + " layers lies outside the domain");
-      if (isph && w.layers != 1)
+      if (isph_one_layer && w.layers != 1)
         val.fail(root["wall"][i]["layers"].node() ? root["wall"][i]["layers"].node() : &(*arr)[i], path_of("wall", i, "layers"),
                  "[[wall]] #" + std::to_string(i) + ": method isph uses one layer of wall particles (with normals); leave layers out or set 1");
-      if (!isph && thick + 1e-12 < sc.support_radius()) {
+      if (!isph_one_layer && thick + 1e-12 < sc.support_radius()) {
         std::ostringstream m;
         m << "[[wall]] #" << i << ": " << w.layers << " layers (" << thick << " m) do not cover the support radius "
           << sc.support_radius() << " m; use layers >= " << covering;
@@ -611,7 +633,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       SolidSpec b;
       b.name = t["name"].value_or("solid" + std::to_string(i));
       b.shape = *t["shape"].value<std::string>();
-      const int covering = isph ? 1 : static_cast<int>(std::ceil(sc.support_radius() / sc.spacing - 1e-9));
+      const int covering = isph_one_layer ? 1 : static_cast<int>(std::ceil(sc.support_radius() / sc.spacing - 1e-9));
       b.layers = static_cast<int>(t["layers"].value_or(static_cast<long long>(covering)));
       b.velocity.assign(D, 0.0);
       if (auto* v = where("solid", i, "velocity")) b.velocity = vec_of(*v);
@@ -674,16 +696,10 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       b.container = *t["container"].value<bool>();
       need(!b.container || b.mesh < 0 || sc.meshes[b.mesh].mesh->closed(), "container",
            "is an open [[mesh]]: a container needs a closed one (an open surface already holds fluid on its normals' side)");
-      // Eulerian ISPH keeps its particles in place: no contact line moves along the wall (a pipe).
-      const bool fixed_round = isph && sc.isph_description == "eulerian" && b.shape != "mesh";
-      need(!(isph && b.container && b.shape != "box" && (D == 3 || b.shape == "mesh") && !fixed_round), "container",
-           "is a 3D round or mesh container: for methods wcsph and mps (and a round one for isph with description = "
-           "\"eulerian\"); the one wall layer of isph with moving particles is not stable there yet (a half-full "
-           "ball at rest, R / d = 8, blew up at t = 0.36 s)");
       const auto [outer_min, outer_max] = solid_extent(b);
       need(inside(outer_min, outer_max), b.shape == "box" ? "min" : b.shape == "mesh" ? "mesh" : "centre",
            b.container ? "lies (partly) outside the domain with its layers" : "lies (partly) outside the domain");
-      need(!isph || b.layers == 1, "layers", "method isph uses one layer of wall particles (with normals); leave layers out or set 1");
+      need(!isph_one_layer || b.layers == 1, "layers", "method isph uses one layer of wall particles (with normals); leave layers out or set 1");
       if (mps && b.shape != "mesh") {
         // MPS's pressure-solved first layer needs its dummy layers behind it (a complete number
         // density), as for [[wall]]: a paddle two spacings thick read 63% of the hydrostatic

@@ -9,7 +9,8 @@
 //                 tank the water's volume grew about 0.3% (docs/stability.md).
 //   full_support  where no free-surface particle lies in the support: the kernel sum over the
 //                 whole support, the wall's two missing layers completed (copies of each wall
-//                 particle one and two spacings further into the wall), over the lattice's own sum,
+//                 particle one and two spacings further into the wall; wall_rows = "adami" has
+//                 them), over the lattice's own sum,
 //                 both ways. On shifted (blue-noise) arrangements of the same density that sum
 //                 reads within a fraction of a percent of the lattice's, so a dilation is seen and
 //                 returned. A dilation counts at most kDilationCap: a deeper deficit is air in a
@@ -36,8 +37,10 @@ class CompressionError {
  public:
   static constexpr double kDilationCap = 0.01;
 
-  CompressionError(const Kernel<D>& kernel, double spacing, CompressionDensity measure)
-      : kernel_(kernel),
+  // walls_complete: the walls have their layers (wall_rows = "adami"), no copies are needed.
+  CompressionError(const Kernel<D>& kernel, double spacing, CompressionDensity measure, bool walls_complete = false)
+      : walls_complete_(walls_complete),
+        kernel_(kernel),
         spacing_(spacing),
         shell_(1.1 * std::sqrt(double(D)) * spacing),
         shell_sum_(lattice_kernel_sum(kernel, spacing, shell_)),
@@ -58,7 +61,7 @@ class CompressionError {
       const std::size_t j = st.neighbours[k];
       if (kind[j] == kFluid && surface[j]) complete = false;
       whole += w;
-      if (kind[j] == kWall)
+      if (kind[j] == kWall && !walls_complete_)
         for (int layer = 1; layer <= 2; ++layer)
           whole += kernel_.w((st.r[k] + layer * spacing_ * wall_normal[j]).norm());
     }
@@ -67,6 +70,7 @@ class CompressionError {
   }
 
  private:
+  bool walls_complete_;
   Kernel<D> kernel_;
   double spacing_, shell_, shell_sum_, support_sum_;
   CompressionDensity measure_;

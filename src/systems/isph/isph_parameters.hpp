@@ -57,6 +57,10 @@ struct IsphParameters {
   // with the Shepard one-sided difference to the fluid neighbours (positive weights, no wall-wall
   // coupling): see IsphPressureEquation.
   bool wall_shepard = false;
+  // Or the layers that cover the support with Adami's wall pressure as their rows (round and
+  // mesh containers); a moving body's acceleration enters it (g - a_w).
+  bool wall_adami = false;
+  bool wall_acceleration = false;
   bool fixed_pressure = false;  // the scene has [[fixed_pressure]] boxes (the column exists)
   double cfl = 0.2;
   double reference_speed = 1;  // sqrt(2 g H): bounds the first steps before anything moves

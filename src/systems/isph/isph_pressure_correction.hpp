@@ -85,9 +85,9 @@ class IsphPressureCorrection final : public System<D> {
       // corner of the dam break at a/d = 100 the pressure grew to 47 kPa in 0.04 s and the run
       // failed at t = 0.11 s. The wall's two missing layers are completed, as copies of each
       // wall particle one and two spacings out along its normal, with the hydrostatic pressure
-      // p_j + rho0 (g . n_j) k d.
+      // p_j + rho0 (g . n_j) k d (with wall_rows = "adami" they exist).
       for (auto j : nl.of(i)) {
-        if (kind[j] != kWall) continue;
+        if (kind[j] != kWall || p_.wall_adami) continue;  // adami: the layers are there
         const Vec<D> r = view.r(i, j);
         for (int layer = 1; layer <= 2; ++layer) {
           const Vec<D> offset = layer * p_.spacing * normal[j];

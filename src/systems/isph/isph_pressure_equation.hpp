@@ -7,6 +7,8 @@
 //                                as eq. 18 writes it)
 //   fluid, interior              -<lap p>_i = -rho0/dt <div v*>_i                      (eq. 5)
 //   wetted wall                  n_i . <grad p>_i = rho0/dt (v*_i - v_wall,i) . n_i     (eq. 17)
+//   wall, wall_rows = "adami"    p_i - sum_f s_f p_f = rho0 (g - a_w) . sum_f s_f (x_i - x_f)
+//                                on every layer a fluid support reaches (Adami et al. 2012)
 //   fluid in a [[fixed_pressure]] box: no row, its value moves to its neighbours' b (Eulerian
 //                                inlet and outlet: ISPH paper section 6(1))
 // <lap p> is the scene's Laplacian as weights (operators/laplacian_choice.hpp); <div v*> is the
@@ -48,7 +50,7 @@ template <int D>
 class IsphPressureEquation final : public System<D> {
  public:
   explicit IsphPressureEquation(const IsphParameters<D>& p)
-      : p_(p), compression_error_(p.kernel, p.spacing, p.compression_density) {}
+      : p_(p), compression_error_(p.kernel, p.spacing, p.compression_density, p.wall_adami) {}
   std::string name() const override { return "ppe_assembly"; }
   Access access() const override {
     Access a;
@@ -57,6 +59,7 @@ class IsphPressureEquation final : public System<D> {
            neighbours_resource, resources::dt)
         .write(pressure_system_resource, pressure_neighbours_resource);
     if (p_.fixed_pressure) a.read(components::fixed_pressure);
+    if (p_.wall_adami && p_.wall_acceleration) a.read(components::body_acceleration);
     return a;
   }
   void initialise(World<D>&, Resources& res) override {
@@ -86,6 +89,8 @@ class IsphPressureEquation final : public System<D> {
     // Dirichlet values other than 0: a neighbour without a row moves coefficient * value to b.
     std::span<const double> fixed;
     if (p_.fixed_pressure) fixed = ctx.read(components::fixed_pressure);
+    std::span<const Vec<D>> acceleration;  // a moving body's, for Adami's rows
+    if (p_.wall_adami && p_.wall_acceleration) acceleration = ctx.read(components::body_acceleration);
     auto known = [&](std::size_t j) { return fixed.empty() || !std::isfinite(fixed[j]) ? 0.0 : fixed[j]; };
 
     // Which particles carry an unknown: interior fluid, surface fluid whose pressure is
@@ -96,6 +101,13 @@ class IsphPressureEquation final : public System<D> {
         if (kind[i] == kFluid) {
           unknown_[i] = !surface[i] || (p_.extrapolated_surface && moment_matrix(full_view, i).determinant() >= 0.2);
           if (!fixed.empty() && std::isfinite(fixed[i])) unknown_[i] = 0;  // [[fixed_pressure]]
+        } else if (kind[i] == kWall && p_.wall_adami) {
+          // Every wall particle a fluid particle's support reaches: the layers complete it.
+          for (auto j : full.of(i))
+            if (kind[j] == kFluid && full_view.r(i, j).norm() < support) {
+              unknown_[i] = 1;
+              break;
+            }
         } else if (kind[i] == kWall) {
           for (auto j : full.of(i)) {
             const Vec<D> r = full_view.r(i, j);
@@ -131,6 +143,13 @@ class IsphPressureEquation final : public System<D> {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         v_star_[i] = v[i];
         if (kind[i] != kWall) continue;
+        if (p_.wall_adami) {
+          // The wall moves with its own velocity plus the step's gravity, as the fluid resting on
+          // it does before the pressure acts: water at rest reads no divergence there and the
+          // rows below hold it up; water running into the wall reads compression.
+          v_star_[i] = v[i] + dt * p_.gravity;
+          continue;
+        }
         Vec<D> sum = Vec<D>::Zero();
         double weight = 0;
         for (auto j : nl.of(i))
@@ -261,13 +280,14 @@ class IsphPressureEquation final : public System<D> {
             const double tau = std::max(dt, p_.relaxation_time);
             rhs += p_.compression_relaxation * p_.rho0 * excess / (tau * tau);
           }
-        } else if (p_.wall_shepard) {
-          // n . grad p = rho0/dt (v*_i - v_wall) . n as a one-sided difference to each fluid
-          // neighbour, p_i - p_j = (n . (x_i - x_j)) n . grad p, averaged with the weights V_j W_ij:
-          //   p_i - sum_j s_j p_j = rho0/dt (v*_i - v_wall) . n  sum_j s_j n . (x_i - x_j),
-          // s_j = V_j W_ij / sum V W over the fluid. Diagonally dominant, and wall rows do not
-          // couple to each other (the corrected gradient along a wall carried an odd-even mode).
-          double total = 0, lever = 0;
+        } else if (p_.wall_adami || p_.wall_shepard) {
+          // Both rows are p_i - sum_f s_f p_f = (a pressure difference), s_f = V_f W_if / sum V W
+          // over the fluid neighbours, scaled by 1/h^2 as the others: diagonally dominant, and
+          // wall rows do not couple to each other (the corrected gradient along a wall carried an
+          // odd-even mode). The entries, and lever = sum_f s_f (x_i - x_f) (its part along the
+          // normal summed as such, for the Shepard row):
+          double total = 0, lever_n = 0;
+          Vec<D> lever = Vec<D>::Zero();
           for (std::size_t k = 0; k < nb.size(); ++k)
             if (kind[nb[k]] == kFluid) total += volume_[nb[k]] * p_.kernel.w(view.r(i, nb[k]).norm());
           diagonal = 1.0 / (h * h);
@@ -275,13 +295,23 @@ class IsphPressureEquation final : public System<D> {
             for (std::size_t k = 0; k < nb.size(); ++k) {
               const std::size_t j = nb[k];
               if (kind[j] != kFluid) continue;
-              Vec<D> r = view.r(i, j);
+              const Vec<D> r = view.r(i, j);  // x_j - x_i
               const double s = volume_[j] * p_.kernel.w(r.norm()) / total;
-              lever -= s * normal[i].dot(r);
+              lever -= s * r;
+              lever_n -= s * normal[i].dot(r);
               if (row_of_[j] != kNoRow && s != 0) entries.emplace_back(row_of_[j], -s / (h * h));
               else from_known += s / (h * h) * known(j);
             }
-          rhs = p_.rho0 / dt * (v_star_[i] - v[i]).dot(normal[i]) * lever / (h * h);
+          if (p_.wall_adami) {
+            // Adami's wall pressure (seed 002 eq. 27): rho0 (g - a_w) . lever. Exact for a
+            // hydrostatic field, on every layer a fluid support reaches.
+            const Vec<D> felt = acceleration.empty() ? p_.gravity : Vec<D>(p_.gravity - acceleration[i]);
+            rhs = p_.rho0 * felt.dot(lever) / (h * h);
+          } else {
+            // n . grad p = rho0/dt (v*_i - v_wall) . n as a one-sided difference to each fluid
+            // neighbour, p_i - p_j = (n . (x_i - x_j)) n . grad p, averaged with s_j.
+            rhs = p_.rho0 / dt * (v_star_[i] - v[i]).dot(normal[i]) * lever_n / (h * h);
+          }
         } else {
           gk = corrected_gradient();
           for (std::size_t k = 0; k < nb.size(); ++k) {
