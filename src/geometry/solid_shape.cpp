@@ -68,7 +68,7 @@ bool SolidShape<D>::within(const Vec<D>& x, double margin) const {
     if (x[a] < lo_[a] - margin || x[a] > hi_[a] + margin) return spec_.container;
   if constexpr (D == 3)
     if (mesh_) {
-      const bool near = (x - mesh_->closest(x)).norm() < margin;
+      const bool near = mesh_->near(x, margin) && (x - mesh_->closest(x)).norm() < margin;
       return near || mesh_->inside(x) != spec_.container;
     }
   return signed_distance(x) < margin;
@@ -171,6 +171,8 @@ std::vector<ShellParticle<D>> SolidShape<D>::container_shell(double d, const Vec
   for_each_lattice_point<D>(origin, d, from, to, [&](const Vec<D>& x) {
     for (int a = 0; a < D; ++a)
       if (x[a] < outer_lo[a] || x[a] > outer_hi[a]) return;
+    if constexpr (D == 3)
+      if (mesh_ && !mesh_->near(x, reach * (1 + 1e-9))) return;  // no layer: farther than reach
     const double outside = shape_distance(x);
     if (outside <= 0 || outside > reach * (1 + 1e-9)) return;
     Vec<D> normal = Vec<D>::Zero();

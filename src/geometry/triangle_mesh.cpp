@@ -116,4 +116,10 @@ Vec<3> TriangleMesh::closest(const Vec<3>& x) const {
   return to_vec(impl_->tree->closest_point(to_point(x)));
 }
 
+bool TriangleMesh::near(const Vec<3>& x, double distance) const {
+  // The cube around the ball: a solid box test in CGAL (a ball query may read as its surface).
+  const Vec<3> lo = x - Vec<3>::Constant(distance), hi = x + Vec<3>::Constant(distance);
+  return impl_->tree->do_intersect(Kernel3::Iso_cuboid_3(to_point(lo), to_point(hi)));
+}
+
 }  // namespace ryushi
