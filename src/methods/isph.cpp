@@ -91,7 +91,8 @@ void populate_isph_world(const Scene& s, const IsphParameters<D>& p, World<D>& w
         return std::pair{p.rho0, !std::isnan(given) ? given : s.hydrostatic_init ? p.rho0 * g_up * depth : 0.0};
       },
       [](int) { return kWall; }, [&](int layer) { return layer == 1 || p.wall_adami; });
-  // The normals of the kept (layer-1) wall particles, in the order they were appended.
+  // The normals of the kept wall particles (layer 1, or all with Adami rows), in the order they
+  // were appended.
   auto& normal = world.ensure(components::wall_normal);
   auto& kind = world.column(components::kind);
   std::size_t next = 0;

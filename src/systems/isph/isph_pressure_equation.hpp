@@ -201,7 +201,7 @@ class IsphPressureEquation final : public System<D> {
         const std::size_t i = sys.particle_of_row[r];
         auto nb = nl.of(i);
         entries.clear();
-        if (!kept && (kind[i] == kFluid || !p_.wall_shepard)) stencil.gather(view, i);
+        if (!kept && (kind[i] == kFluid || !(p_.wall_shepard || p_.wall_adami))) stencil.gather(view, i);
         // The row's weights: computed (and kept, in the Eulerian description) or the kept ones.
         std::span<const double> wk;
         std::span<const Vec<D>> gk;
