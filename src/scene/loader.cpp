@@ -301,6 +301,9 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
                    "half-full ball at rest blew up at t = 0.36 s); leave wall_rows out or set \"adami\"");
   }
   const bool isph_one_layer = isph && sc.isph_wall_rows != "adami";
+  // The default layers of [[wall]] and [[solid]]: ISPH's one with normals (ISPH paper section 4),
+  // or, with wall_rows = "adami" and for the other methods, enough to cover the support.
+  const int covering = isph_one_layer ? 1 : static_cast<int>(std::ceil(sc.support_radius() / sc.spacing - 1e-9));
   sc.isph_confined = *get("method", "confined").value<bool>();
   sc.compression_relaxation = *get("method", "compression_relaxation").value<double>();
   sc.compression_density = *get("method", "compression_density").value<std::string>();
@@ -558,9 +561,6 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       sc.wall_pressure_layers + static_cast<int>(std::floor(sc.support_radius() / sc.spacing + 1e-9));
   if (auto* arr = root["wall"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
-      // ISPH walls are one layer of particles with normals (ISPH paper section 4), but with
-      // wall_rows = "adami" the layers of the other methods.
-      const int covering = isph_one_layer ? 1 : static_cast<int>(std::ceil(sc.support_radius() / sc.spacing - 1e-9));
       WallBox w{vec_of(*where("wall", i, "min")), vec_of(*where("wall", i, "max")),
                 static_cast<int>(root["wall"][i]["layers"].value_or(static_cast<long long>(covering))),
                 *root["wall"][i]["open_top"].value<bool>(), {}, {}};
@@ -633,7 +633,6 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       SolidSpec b;
       b.name = t["name"].value_or("solid" + std::to_string(i));
       b.shape = *t["shape"].value<std::string>();
-      const int covering = isph_one_layer ? 1 : static_cast<int>(std::ceil(sc.support_radius() / sc.spacing - 1e-9));
       b.layers = static_cast<int>(t["layers"].value_or(static_cast<long long>(covering)));
       b.velocity.assign(D, 0.0);
       if (auto* v = where("solid", i, "velocity")) b.velocity = vec_of(*v);
