@@ -67,13 +67,13 @@ ElasticParameters<D> elastic_parameters(const Scene& s, const Kernel<D>& kernel,
   p.domain = domain;
   p.gravity = scene_vector<D>(s.gravity);
   p.spacing = s.spacing;
-  p.alpha = s.solid_alpha;
-  p.beta = s.solid_beta;
-  p.artificial_stress = s.solid_artificial_stress;
-  p.seed_walls = s.solid_walls == "seed";
+  p.alpha = s.method_params.number("solid_artificial_viscosity");
+  p.beta = s.method_params.number("solid_artificial_viscosity_quadratic");
+  p.artificial_stress = s.method_params.number("solid_artificial_stress");
+  p.seed_walls = s.method_params.text("solid_walls") == "seed";
   for (auto& e : s.elastic) p.max_sound_speed = std::max(p.max_sound_speed, e.sound_speed());
   p.fluid = !s.fluid.empty() || !s.imports.empty();
-  p.max_substeps = s.solid_substeps;
+  p.max_substeps = static_cast<int>(s.method_params.integer("solid_substeps"));
   if (p.max_sound_speed > 0) p.substep_limit = step_fraction * kernel.h() / p.max_sound_speed;
   return p;
 }

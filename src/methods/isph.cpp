@@ -18,6 +18,7 @@
 #include <limits>
 
 #include "methods/isph2_surface_detection.hpp"
+#include "methods/isph_spec.hpp"
 #include "methods/method.hpp"
 #include "methods/scene_particles.hpp"
 #include "systems/isph/fixed_pressure_velocity.hpp"
@@ -43,29 +44,30 @@ namespace {
 template <int D>
 IsphParameters<D> isph_parameters(const Scene& s) {
   IsphParameters<D> p;
+  const auto& mp = s.method_params;
   p.kernel = Kernel<D>(kernel_from_name(s.kernel), s.smoothing_length());
   p.domain = scene_domain<D>(s);
   p.gravity = scene_vector<D>(s.gravity);
   p.spacing = s.spacing;
   p.rho0 = s.density;
   p.nu = s.viscosity / s.density;
-  p.description = s.isph_description == "lagrangian" ? IsphDescription::Lagrangian
-                  : s.isph_description == "eulerian" ? IsphDescription::Eulerian
+  p.description = mp.text("description") == "lagrangian" ? IsphDescription::Lagrangian
+                  : mp.text("description") == "eulerian" ? IsphDescription::Eulerian
                                                      : IsphDescription::Ale;
-  p.ppe_laplacian = laplacian_order(s.ppe_laplacian);
-  p.viscous_laplacian = laplacian_order(s.viscous_laplacian);
-  p.pressure_gradient = s.pressure_gradient == "symmetric" ? PressureGradientForm::Symmetric
-                        : s.pressure_gradient == "hybrid"  ? PressureGradientForm::Hybrid
+  p.ppe_laplacian = laplacian_order(mp.text("ppe_laplacian"));
+  p.viscous_laplacian = laplacian_order(mp.text("viscous_laplacian"));
+  p.pressure_gradient = mp.text("pressure_gradient") == "symmetric" ? PressureGradientForm::Symmetric
+                        : mp.text("pressure_gradient") == "hybrid"  ? PressureGradientForm::Hybrid
                                                            : PressureGradientForm::Corrected;
-  p.symmetric_gradient_det = s.symmetric_gradient_det;
-  p.uncorrected_divergence_det = s.uncorrected_divergence_det;
-  p.compression_relaxation = s.compression_relaxation;
-  p.compression_density = s.compression_density == "full_support" ? CompressionDensity::FullSupport
+  p.symmetric_gradient_det = mp.number("symmetric_gradient_det");
+  p.uncorrected_divergence_det = mp.number("uncorrected_divergence_det");
+  p.compression_relaxation = mp.number("compression_relaxation");
+  p.compression_density = mp.text("compression_density") == "full_support" ? CompressionDensity::FullSupport
                                                                   : CompressionDensity::FirstShell;
-  p.extrapolated_surface = s.free_surface_pressure == "extrapolated";
-  p.wall_no_slip = !s.wall_slip;
-  p.wall_shepard = s.isph_wall_rows == "shepard";
-  p.wall_adami = s.isph_wall_rows == "adami";
+  p.extrapolated_surface = mp.text("free_surface_pressure") == "extrapolated";
+  p.wall_no_slip = !mp.flag("wall_slip");
+  p.wall_shepard = mp.text("wall_rows") == "shepard";
+  p.wall_adami = mp.text("wall_rows") == "adami";
   p.wall_acceleration = std::any_of(s.solids.begin(), s.solids.end(), [](const SolidSpec& b) { return b.moves(); });
   p.fixed_pressure = !s.fixed_pressure.empty();
   p.cfl = s.cfl;
@@ -88,9 +90,9 @@ void populate_isph_world(const Scene& s, const IsphParameters<D>& p, World<D>& w
   const auto appended = append_scene_particles<D>(
       s, p.rho0, world,
       [&](double depth, double given) {
-        return std::pair{p.rho0, !std::isnan(given) ? given : s.hydrostatic_init ? p.rho0 * g_up * depth : 0.0};
+        return std::pair{p.rho0, !std::isnan(given) ? given : s.method_params.flag("hydrostatic_init") ? p.rho0 * g_up * depth : 0.0};
       },
-      [](int) { return kWall; }, [&](int layer) { return layer == 1 || p.wall_adami; });
+      [](int) { return kWall; }, [&](int layer) { return layer == 1 || p.wall_adami; }, !p.wall_adami);
   // The normals of the kept wall particles (layer 1, or all with Adami rows), in the order they
   // were appended.
   auto& normal = world.ensure(components::wall_normal);
@@ -99,7 +101,7 @@ void populate_isph_world(const Scene& s, const IsphParameters<D>& p, World<D>& w
   for (std::size_t i = 0; i < world.size(); ++i)
     if (kind[i] == kWall) normal[i] = appended.wall_normal[next++];
   add_surface_elements(s, appended, world);
-  if (s.isph_confined) {  // read by the pressure rows; no system writes them
+  if (s.method_params.flag("confined")) {  // read by the pressure rows; no system writes them
     world.ensure(components::free_surface);
     world.ensure(components::surface_normal);
   }
@@ -135,7 +137,7 @@ std::vector<SystemPtr<D>> isph_pipeline(const Scene& s, const IsphParameters<D>&
   if (p.description != IsphDescription::Eulerian)
     list.push_back(std::make_shared<SupportFilter<D>>(p.kernel.support()));
   // A confined fluid has no surface to find (populate_isph_world leaves the flags cleared).
-  if (!s.isph_confined) list.push_back(isph2_surface_detection<D>(context));
+  if (!s.method_params.flag("confined")) list.push_back(isph2_surface_detection<D>(context));
   list.push_back(std::make_shared<IsphPressureEquation<D>>(p));
   if (solver.preconditioner != "none") list.push_back(std::make_shared<PreconditionerSetup<D>>(solver));
   list.push_back(std::make_shared<LinearSolve<D>>(solver));
@@ -172,7 +174,7 @@ MethodSetup<D> build_isph(const Scene& s, World<D>& world, const PipelineOptions
   p.relaxation_time = p.cfl * p.spacing / std::max(vmax, p.reference_speed);
   m.pipeline = isph_pipeline<D>(s, p);
   char b[96];
-  std::snprintf(b, sizeof b, "h = %.4g m, %s, bicgstab + ", p.kernel.h(), s.isph_description.c_str());
+  std::snprintf(b, sizeof b, "h = %.4g m, %s, bicgstab + ", p.kernel.h(), s.method_params.text("description").c_str());
   m.summary = b + s.solver.preconditioner;
   m.parameters = {{"smoothing_length", p.kernel.h()}, {"search_radius", p.search_radius()}};
   if (!options.dump_matrix_dir.empty())
@@ -186,10 +188,6 @@ MethodSetup<D> build_isph(const Scene& s, World<D>& world, const PipelineOptions
 
 }  // namespace
 
-RYUSHI_REGISTER_METHOD("isph",
-                       "incompressible SPH: corrected ALE-ISPH with one layer of Neumann walls, density-based "
-                       "shifting and I-SPH(2) free surfaces (pressure equation solved as set in [solver]; "
-                       "docs/isph.md)",
-                       build_isph);
+RYUSHI_REGISTER_METHOD("isph", isph_spec(), build_isph);
 
 }  // namespace ryushi

@@ -17,10 +17,15 @@ std::map<std::string, MethodRegistryEntry>& registry() {
 }
 }  // namespace
 
-bool register_method(const std::string& name, MethodRegistryEntry entry) {
-  if (!registry().emplace(name, std::move(entry)).second)
-    throw std::logic_error("method '" + name + "' registered twice");
+bool register_method(const std::string& name, MethodSpec spec, MethodRegistryEntry entry) {
+  register_method_spec(name, std::move(spec));  // throws for a name taken
+  registry().emplace(name, std::move(entry));
   return true;
+}
+
+void unregister_method(const std::string& name) {
+  registry().erase(name);
+  unregister_method_spec(name);
 }
 
 std::vector<std::string> method_names() {

@@ -4,9 +4,12 @@
 // [[systems]] need, and registers itself by name next to that code:
 //
 //   template <int D> MethodSetup<D> build_my_method(const Scene&, World<D>&, const PipelineOptions&);
-//   RYUSHI_REGISTER_METHOD("my_method", "One line for docs/scenes.md.", build_my_method);
+//   RYUSHI_REGISTER_METHOD("my_method", my_method_spec(), build_my_method);
 //
-// The driver and build_method know no method by name.
+// where my_method_spec() returns the MethodSpec (scene/registered_keys.hpp): the line for
+// docs/scenes.md, the method's [method] keys (read by the builder from scene.method_params) and
+// its hooks (default kernel, wall layers, checks). The driver, the loader and build_method know
+// no method by name.
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -52,12 +55,14 @@ template <int D>
 using MethodBuilder = std::function<MethodSetup<D>(const Scene&, World<D>&, const PipelineOptions&)>;
 
 struct MethodRegistryEntry {
-  std::string doc;
   MethodBuilder<2> build2;
   MethodBuilder<3> build3;
 };
 
-bool register_method(const std::string& name, MethodRegistryEntry entry);
+// Registers the builders here and the spec with the scene loader. Throws std::logic_error for a
+// name already registered (by ryushi or a plugin).
+bool register_method(const std::string& name, MethodSpec spec, MethodRegistryEntry entry);
+void unregister_method(const std::string& name);
 std::vector<std::string> method_names();  // sorted
 const MethodRegistryEntry& method_registry_entry(const std::string& name);
 
@@ -69,8 +74,8 @@ MethodSetup<D> build_method(const Scene& scene, World<D>& world, const PipelineO
 // Throws SceneError: `--dump-matrix` given to a method that assembles no linear system.
 void refuse_matrix_dump(const Scene& scene, const PipelineOptions& options);
 
-#define RYUSHI_REGISTER_METHOD(NAME, DOC, BUILD)                                                  \
+#define RYUSHI_REGISTER_METHOD(NAME, SPEC, BUILD)                                                 \
   [[maybe_unused]] static const bool RYUSHI_CONCAT(ryushi_method_registered_, __LINE__) =        \
-      ::ryushi::register_method(NAME, ::ryushi::MethodRegistryEntry{DOC, BUILD<2>, BUILD<3>})
+      ::ryushi::register_method(NAME, SPEC, ::ryushi::MethodRegistryEntry{BUILD<2>, BUILD<3>})
 
 }  // namespace ryushi

@@ -17,6 +17,7 @@
 #include <cstdio>
 
 #include "methods/method.hpp"
+#include "methods/mps_spec.hpp"
 #include "methods/scene_particles.hpp"
 #include "systems/integrate/velocity_time_step.hpp"
 #include "systems/mps/mps_collision.hpp"
@@ -42,10 +43,10 @@ MpsParameters<D> mps_parameters(const Scene& s) {
   p.set_weight(s.smoothing_length());
   p.rho0 = s.density;
   p.nu = s.viscosity / s.density;
-  p.surface_threshold = s.surface_threshold;
-  p.relaxation = s.source_relaxation;
-  if (s.source_density == "smooth") p.set_source_kernel(s.source_support);
-  p.clamp_negative_pressure = s.clamp_negative_pressure;
+  p.surface_threshold = s.method_params.number("surface_threshold");
+  p.relaxation = s.method_params.number("source_relaxation");
+  if (s.method_params.text("source_density") == "smooth") p.set_source_kernel(s.method_params.number("source_support"));
+  p.clamp_negative_pressure = s.method_params.flag("clamp_negative_pressure");
   p.cfl = s.cfl;
   double u = std::sqrt(2.0 * s.gravity_magnitude() * s.fluid_height());
   p.reference_speed = u > 0 ? u : 1.0;
@@ -67,9 +68,9 @@ void populate_mps_world(const Scene& s, const MpsParameters<D>& p, World<D>& wor
   const auto appended = append_scene_particles<D>(
       s, p.rho0, world,
       [&](double depth, double given) {
-        return std::pair{p.rho0, !std::isnan(given) ? given : s.hydrostatic_init ? p.rho0 * g_up * depth : 0.0};
+        return std::pair{p.rho0, !std::isnan(given) ? given : s.method_params.flag("hydrostatic_init") ? p.rho0 * g_up * depth : 0.0};
       },
-      [&](int layer) { return layer <= s.wall_pressure_layers ? kWall : kDummy; });
+      [&](int layer) { return layer <= s.method_params.integer("wall_pressure_layers") ? kWall : kDummy; });
   add_surface_elements(s, appended, world);
 }
 
@@ -86,9 +87,11 @@ std::vector<SystemPtr<D>> mps_pipeline(const Scene& s, const MpsParameters<D>& p
   if (s.solver.preconditioner != "none") list.push_back(std::make_shared<PreconditionerSetup<D>>(s.solver));
   list.push_back(std::make_shared<LinearSolve<D>>(s.solver));
   list.push_back(std::make_shared<MpsPressureCorrection<D>>(p));
-  if (s.collision_distance > 0)
-    list.push_back(std::make_shared<MpsCollision<D>>(p, s.collision_distance, s.wall_collision_distance,
-                                                     s.collision_restitution));
+  const auto& mp = s.method_params;
+  if (mp.number("collision_distance") > 0)
+    list.push_back(std::make_shared<MpsCollision<D>>(p, mp.number("collision_distance"),
+                                                     mp.number("wall_collision_distance"),
+                                                     mp.number("collision_restitution")));
   if (s.fixed_dt <= 0) list.push_back(std::make_shared<VelocityTimeStep<D>>(mps_time_step<D>(p)));
   return list;
 }
@@ -133,9 +136,6 @@ MethodSetup<D> build_mps(const Scene& s, World<D>& world, const PipelineOptions&
 
 }  // namespace
 
-RYUSHI_REGISTER_METHOD("mps",
-                       "moving particle semi-implicit (pressure from a Poisson equation each step, solved as set "
-                       "in [solver]; docs/mps.md)",
-                       build_mps);
+RYUSHI_REGISTER_METHOD("mps", mps_spec(), build_mps);
 
 }  // namespace ryushi

@@ -13,7 +13,7 @@
 namespace ryushi {
 
 template <int D>
-SceneParticles<D> scene_particles(const Scene& s) {
+SceneParticles<D> scene_particles(const Scene& s, bool ring_containers) {
   const double d = s.spacing;
   SceneParticles<D> out;
   // [particles] disorder: one generator over the fluid in lattice order, so a seed gives one set.
@@ -31,7 +31,6 @@ SceneParticles<D> scene_particles(const Scene& s) {
   // 0.7 d more; cut at half a spacing, as round bodies cut it, some walls saw none, p = 0, and the
   // tank blew up at t = 0.4 s). Only the Eulerian pipe keeps that ring now: with moving particles
   // a round container takes wall_rows = "adami" and the lattice's layers, as the other methods.
-  const bool ring_containers = s.method == "isph" && s.isph_wall_rows != "adami";
   auto margin = [&](std::size_t k) {
     const SolidSpec& b = s.solids[k];
     if (!b.container) return 0.5 * d * (1 - 1e-9);
@@ -176,7 +175,7 @@ SceneParticles<D> scene_particles(const Scene& s) {
   return out;
 }
 
-template SceneParticles<2> scene_particles<2>(const Scene&);
-template SceneParticles<3> scene_particles<3>(const Scene&);
+template SceneParticles<2> scene_particles<2>(const Scene&, bool);
+template SceneParticles<3> scene_particles<3>(const Scene&, bool);
 
 }  // namespace ryushi

@@ -37,21 +37,24 @@ struct SceneParticles {
   std::vector<double> wall_area;      // a body's first layer: the surface each stands for (else 0)
 };
 
+// ring_containers: ISPH's one wall layer with normals, a ring outside a round container
+// (scene_particles.cpp says why); otherwise a container's walls are the lattice outside it.
 template <int D>
-SceneParticles<D> scene_particles(const Scene& scene);
+SceneParticles<D> scene_particles(const Scene& scene, bool ring_containers = false);
 
 // Appends the scene's particles to the world: fluid with the blocks' initial velocities,
 // (density, pressure) = fluid_state(depth, pressure) (pressure: the block's given initial
 // pressure, NaN where none) and mass = density * d^D (each lattice cell holds its fluid), then
 // the wall particles with kind = wall_kind(layer), density rho0, mass rho0 d^D and their body's
-// velocity; a method that keeps only some layers drops the others with keep_layer.
+// velocity; a method that keeps only some layers drops the others with keep_layer (and, with
+// one layer, may ask for ring_containers).
 // Returns the particles as appended (the kept wall layers, in order), for what a method adds.
 template <int D, class FluidState, class WallKind, class KeepLayer = bool (*)(int)>
 SceneParticles<D> append_scene_particles(
     const Scene& s, double rho0, World<D>& world, FluidState&& fluid_state, WallKind&& wall_kind,
-    KeepLayer&& keep_layer = [](int) { return true; }) {
+    KeepLayer&& keep_layer = [](int) { return true; }, bool ring_containers = false) {
   const double volume = std::pow(s.spacing, D);
-  auto particles = scene_particles<D>(s);
+  auto particles = scene_particles<D>(s, ring_containers);
   {  // only the kept wall layers
     SceneParticles<D> kept = particles;
     kept.wall.clear(), kept.wall_layer.clear(), kept.wall_normal.clear();

@@ -9,6 +9,7 @@
 
 #include "ecs/lattice.hpp"
 #include "methods/method.hpp"
+#include "methods/swe_spec.hpp"
 #include "scene/block_fields.hpp"
 #include "systems/splitting/particle_splitting.hpp"
 #include "systems/swe/ghost_images.hpp"
@@ -228,10 +229,6 @@ MethodSetup<D> build_swe(const Scene& s, World<D>& world, const PipelineOptions&
 
 }  // namespace
 
-RYUSHI_REGISTER_METHOD(
-    "swe",
-    "shallow-water MPS in the plan view with dynamic particle splitting (Saigo & Koshizuka; "
-    "[swe], [bed], [splitting]; docs/swe.md)",
-    build_swe);
+RYUSHI_REGISTER_METHOD("swe", swe_spec(), build_swe);
 
 }  // namespace ryushi

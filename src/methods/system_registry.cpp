@@ -3,6 +3,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "scene/registered_keys.hpp"
+
 namespace ryushi {
 
 namespace {
@@ -14,9 +16,15 @@ std::map<std::string, SystemRegistryEntry>& registry() {
 }  // namespace
 
 bool register_system(const std::string& name, SystemRegistryEntry entry) {
-  if (!registry().emplace(name, std::move(entry)).second)
-    throw std::logic_error("system '" + name + "' registered twice");
+  // The loader checks [[systems]] keys against the scene layer's copy of them.
+  register_system_keys(name, SystemKeys{entry.doc, entry.params});
+  registry().emplace(name, std::move(entry));
   return true;
+}
+
+void unregister_system(const std::string& name) {
+  registry().erase(name);
+  unregister_system_keys(name);
 }
 
 std::vector<std::string> system_registry_names() {

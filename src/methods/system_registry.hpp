@@ -26,7 +26,9 @@ struct SystemRegistryEntry {
   std::function<SystemPtr<3>(const toml::table&, const MethodContext<3>&)> make3;
 };
 
+// Throws std::logic_error for a name already registered (by ryushi or a plugin).
 bool register_system(const std::string& name, SystemRegistryEntry entry);
+void unregister_system(const std::string& name);
 std::vector<std::string> system_registry_names();
 bool system_registered(const std::string& name);
 const SystemRegistryEntry& system_registry_entry(const std::string& name);

@@ -8,6 +8,7 @@
 
 #include "methods/isph2_surface_detection.hpp"
 #include "methods/method.hpp"
+#include "methods/wcsph_spec.hpp"
 
 #include "methods/elastic_bodies.hpp"
 #include "methods/scene_particles.hpp"
@@ -46,16 +47,16 @@ WcsphParameters<D> wcsph_parameters(const Scene& s) {
   p.rho0 = s.density;
   p.c0 = s.resolved_sound_speed();
   p.gamma = s.gamma;
-  p.delta = s.delta;
-  p.alpha = s.alpha;
-  p.beta = s.beta;
+  p.delta = s.method_params.number("delta");
+  p.alpha = s.method_params.number("artificial_viscosity");
+  p.beta = s.method_params.number("artificial_viscosity_quadratic");
   p.mu = s.viscosity;
-  p.wall_no_slip = !s.wall_slip;
+  p.wall_no_slip = !s.method_params.flag("wall_slip");
   p.wall_acceleration = std::any_of(s.solids.begin(), s.solids.end(), [](const SolidSpec& b) { return b.moves(); });
   p.variable_viscosity = s.rheology.shear_dependent() || s.rheology.temperature_dependent();
   p.elastic_bodies = !s.elastic.empty();
   // With solid substeps the step keeps N times the solid's limit: its sound speed over N.
-  for (auto& e : s.elastic) p.solid_sound_speed = std::max(p.solid_sound_speed, e.sound_speed() / s.solid_substeps);
+  for (auto& e : s.elastic) p.solid_sound_speed = std::max(p.solid_sound_speed, e.sound_speed() / s.method_params.integer("solid_substeps"));
   return p;
 }
 
@@ -70,7 +71,7 @@ double thermal_step_limit(const Scene& s, const WcsphParameters<D>& p) {
 template <int D>
 TimeStepControl<D> step_control(const Scene& s, const WcsphParameters<D>& p) {
   return TimeStepControl<D>(p, s.cfl, thermal_step_limit<D>(s, p), s.step_rule == "seed001",
-                            s.integrator == "leapfrog" ? 0.5 : 1.0);
+                            s.method_params.text("integrator") == "leapfrog" ? 0.5 : 1.0);
 }
 
 // A rheology model's first step: the largest viscosity at rest over the starting temperatures
@@ -95,7 +96,7 @@ void populate_world(const Scene& s, const WcsphParameters<D>& p, World<D>& world
   auto appended = append_scene_particles<D>(
       s, p.rho0, world,
       [&](double depth, double given) {
-        double rho = p.density(!std::isnan(given) ? given : s.hydrostatic_init ? p.rho0 * g_up * depth : 0.0);
+        double rho = p.density(!std::isnan(given) ? given : s.method_params.flag("hydrostatic_init") ? p.rho0 * g_up * depth : 0.0);
         return std::pair{rho, p.pressure(rho)};
       },
       [](int) { return kWall; });
@@ -131,7 +132,7 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
   std::shared_ptr<ElasticModel<D>> elastic;
   SystemPtr<D> fluid_push;  // the fluid's force on the solid (second stage: the final kick's)
   if (!s.elastic.empty()) {
-    if (s.solid_formulation == "updated")
+    if (s.method_params.text("solid_formulation") == "updated")
       elastic = std::make_shared<UpdatedLagrangianElasticity<D>>(elastic_p);
     else
       elastic = std::make_shared<TotalLagrangianElasticity<D>>(elastic_p);
@@ -147,7 +148,7 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
     list.push_back(forces);
     if (conduction) list.push_back(conduction);
   };
-  const bool leapfrog = s.integrator == "leapfrog";
+  const bool leapfrog = s.method_params.text("integrator") == "leapfrog";
   if (leapfrog) {  // one force evaluation per step (seed 001 eqs. 15-17)
     stage();
     list.push_back(std::make_shared<LeapfrogIntegrator<D>>(heat));
@@ -166,8 +167,8 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
     if (elastic) list.push_back(std::make_shared<ElasticCorrector<D>>(elastic_p.fluid));
     list.push_back(eos);
   }
-  if (s.velocity_smoothing > 0)
-    list.push_back(std::make_shared<XsphVelocitySmoothing<D>>(p.kernel, p.domain, s.velocity_smoothing, leapfrog));
+  if (const double eps = s.method_params.number("velocity_smoothing"); eps > 0)
+    list.push_back(std::make_shared<XsphVelocitySmoothing<D>>(p.kernel, p.domain, eps, leapfrog));
   if (s.shifting_model == "xsph") {
     list.push_back(std::make_shared<XsphShifting<D>>(
         XsphShiftingParameters<D>{p.kernel, p.domain, p.spacing, s.xsph_epsilon, s.max_shift}));
@@ -207,6 +208,6 @@ MethodSetup<D> build_wcsph(const Scene& s, World<D>& world, const PipelineOption
 
 }  // namespace
 
-RYUSHI_REGISTER_METHOD("wcsph", "weakly compressible SPH (explicit, Tait equation of state; docs/wcsph.md)", build_wcsph);
+RYUSHI_REGISTER_METHOD("wcsph", wcsph_spec(), build_wcsph);
 
 }  // namespace ryushi

@@ -18,16 +18,6 @@ std::vector<double> numbers(const toml::node& n) {
 }  // namespace
 
 void load_elastic(toml::table& root, const Validator& val, Scene& sc) {
-  sc.solid_alpha = *root["method"]["solid_artificial_viscosity"].value<double>();
-  sc.solid_beta = *root["method"]["solid_artificial_viscosity_quadratic"].value<double>();
-  sc.solid_substeps = static_cast<int>(*root["method"]["solid_substeps"].value<std::int64_t>());
-  sc.solid_formulation = *root["method"]["solid_formulation"].value<std::string>();
-  sc.solid_artificial_stress = *root["method"]["solid_artificial_stress"].value<double>();
-  sc.solid_walls = *root["method"]["solid_walls"].value<std::string>();
-  if (sc.solid_walls == "seed" && sc.solid_formulation != "updated")
-    val.fail(root["method"]["solid_walls"].node(), "method.solid_walls",
-             "solid_walls = \"seed\" (seed 002 eq. 28) is for solid_formulation = \"updated\": the total "
-             "Lagrangian form's sums run over the rest configuration, where walls have no place");
   auto* arr = root["elastic"].as_array();
   if (!arr) return;
   const int D = sc.dimension;
@@ -39,9 +29,6 @@ void load_elastic(toml::table& root, const Validator& val, Scene& sc) {
     auto fail = [&](const char* key, const std::string& msg) {
       val.fail(t[key].node() ? t[key].node() : &(*arr)[i], prefix + key, label + " " + msg);
     };
-    if (sc.method != "wcsph") fail("min", "is for method wcsph");
-    if (sc.integrator != "midpoint")
-      fail("min", "needs [method] integrator = \"midpoint\" (the leapfrog does not move solids yet)");
     ElasticSpec e;
     e.name = t["name"].value_or(label);
     e.min = numbers(*t["min"].node());
@@ -118,11 +105,12 @@ void load_elastic(toml::table& root, const Validator& val, Scene& sc) {
     }
     // A fixed step the elastic waves outrun is unstable from the first steps (substeps: the
     // solid takes at most solid_substeps of them in one step).
-    const double limit = sc.solid_substeps * sc.smoothing_length() / e.sound_speed();
+    const long long substeps = sc.method_params.integer("solid_substeps");  // [[elastic]] is wcsph's
+    const double limit = static_cast<double>(substeps) * sc.smoothing_length() / e.sound_speed();
     if (sc.fixed_dt > limit) {
       std::ostringstream m;
       m << "[time] dt = " << sc.fixed_dt << " s exceeds " << label << "'s elastic wave step "
-        << (sc.solid_substeps > 1 ? "[method] solid_substeps x " : "") << "h / c_s = " << limit
+        << (substeps > 1 ? "[method] solid_substeps x " : "") << "h / c_s = " << limit
         << " s (c_s = sqrt((K + 4G/3) / rho0) = " << e.sound_speed() << " m/s)";
       val.fail(root["time"]["dt"].node(), "time.dt", m.str());
     }

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <string>
 
+#include "scene/registered_keys.hpp"
+
 namespace ryushi {
 
 namespace {
@@ -40,14 +42,18 @@ void load_heat_and_rheology(toml::table& root, const Validator& val, Scene& sc) 
   auto fail = [&](const char* key, const std::string& msg) {
     val.fail(material(key).node(), std::string("material.") + key, msg);
   };
-  const bool wcsph = sc.method == "wcsph";
+  // The methods that model a rheology and heat (their hooks say so; today wcsph).
+  const bool wcsph = find_method_spec(sc.method)->hooks.multiphysics;
+  std::string modelling;
+  for (auto& name : method_spec_names())
+    if (find_method_spec(name)->hooks.multiphysics) modelling += (modelling.empty() ? "" : ", ") + name;
 
   // Rheology.
   const std::string model = *material("rheology").value<std::string>();
   Rheology& r = sc.rheology;
   r.model = rheology_model_from_name(model);
   if (model != "newtonian" && !wcsph)
-    fail("rheology", "[material] rheology = \"" + model + "\" is for method wcsph");
+    fail("rheology", "[material] rheology = \"" + model + "\" is for method " + modelling);
   const ModelKeys* mine = &model_keys().front();
   for (auto& k : model_keys())
     if (model == k.name) mine = &k;
@@ -83,7 +89,7 @@ void load_heat_and_rheology(toml::table& root, const Validator& val, Scene& sc) 
   if (r.activation_energy != 0) {
     if (!wcsph)
       fail("activation_energy",
-           "'activation_energy' (a temperature-dependent viscosity) is for method wcsph");
+           "'activation_energy' (a temperature-dependent viscosity) is for method " + modelling);
     if (!given("reference_temperature"))
       fail("activation_energy",
            "'activation_energy' needs reference_temperature (K): the temperature at which the model's "
@@ -102,7 +108,7 @@ void load_heat_and_rheology(toml::table& root, const Validator& val, Scene& sc) 
   sc.conductivity = *material("conductivity").value<double>();
   sc.heat_capacity = *material("heat_capacity").value<double>();
   if (sc.conductivity > 0 && !wcsph)
-    fail("conductivity", "heat conduction ([material] conductivity > 0) is for method wcsph");
+    fail("conductivity", "heat conduction ([material] conductivity > 0) is for method " + modelling);
   if (given("temperature")) {
     if (!sc.models_heat())
       fail("temperature",

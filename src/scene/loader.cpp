@@ -8,11 +8,11 @@
 
 #include <spdlog/spdlog.h>
 
-#include "methods/system_registry.hpp"
 #include "geometry/solid_shape.hpp"
 #include "scene/expression.hpp"
 #include "scene/load_elastic.hpp"
 #include "scene/load_heat_rheology.hpp"
+#include "scene/load_method.hpp"
 #include "scene/particle_import.hpp"
 #include "scene/overlaps.hpp"
 #include "scene/scene.hpp"
@@ -114,12 +114,18 @@ void apply_override(toml::table& root, const std::string& text, Validator& val) 
     key = parts[2];
     key_path = parts[0] + "." + parts[1] + "." + key;
   } else {
-    if (parts.size() != 2) throw SceneError(where + ": use section.key");
+    // section.key, or section.table.key for a table inside it ([method.isph] keys).
+    if (parts.size() != 2 && parts.size() != 3) throw SceneError(where + ": use section.key");
     if (!root.contains(parts[0])) root.insert(parts[0], toml::table{});
     target = root[parts[0]].as_table();
     if (!target) throw SceneError(where + ": [" + parts[0] + "] is not a table in the scene");
-    key = parts[1];
-    key_path = parts[0] + "." + key;
+    if (parts.size() == 3) {
+      if (!target->contains(parts[1])) target->insert(parts[1], toml::table{});
+      target = target->get_as<toml::table>(parts[1]);
+      if (!target) throw SceneError(where + ": " + parts[0] + "." + parts[1] + " is not a table in the scene");
+    }
+    key = parts.back();
+    key_path = path;
   }
   toml::table holder;
   try {
@@ -162,10 +168,12 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   }
   // The sections the file (or --set) wrote; the others get their defaults inserted below.
   std::set<std::string> written;
-  for (auto& [k, node] : root) written.insert(std::string(k.str()));
-  // Whether the scene names its integrator (before the defaults fill the tables in).
-  const bool integrator_named = static_cast<bool>(root["method"]["integrator"]);
-  const bool wall_rows_named = static_cast<bool>(root["method"]["wall_rows"]);
+  std::set<std::string> written_keys;  // "section.key" of the plain sections' keys it wrote
+  for (auto& [k, node] : root) {
+    written.insert(std::string(k.str()));
+    if (auto* t = node.as_table())
+      for (auto& [key, _] : *t) written_keys.insert(std::string(k.str()) + "." + std::string(key.str()));
+  }
   // The dimension first: vector lengths depend on it.
   {
     auto* scene_tbl = root["scene"].as_table();
@@ -174,6 +182,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     val.dimension = static_cast<int>(*(*scene_tbl)["dimension"].value<long long>());
   }
   for (auto& s : scene_schema()) {
+    if (s.name == "method") continue;  // checked against the chosen method's keys below
     toml::node* node = root.get(s.name);
     if (!node) {
       if (s.required) val.fail(nullptr, s.name, "missing required section " + (s.array_of_tables ? "[[" + s.name + "]]" : "[" + s.name + "]"));
@@ -203,11 +212,11 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       auto* name_node = t.get("name");
       if (!name_node || !name_node->is_string()) val.fail(&(*arr)[i], prefix + "name", label + " needs name = \"<registered system>\"");
       std::string sys = *name_node->value<std::string>();
-      if (!system_registered(sys)) {
-        std::string hint = closest_name(sys, system_registry_names());
+      if (!find_system_keys(sys)) {
+        std::string hint = closest_name(sys, system_key_names());
         val.fail(name_node, prefix + "name", "no system registered as '" + sys + "'" + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
       }
-      auto keys = system_registry_entry(sys).params;
+      auto keys = find_system_keys(sys)->keys;
       keys.insert(keys.begin(), s.keys.begin(), s.keys.end());
       val.check_table(t, label + " (" + sys + ")", prefix, keys, &(*arr)[i]);
     }
@@ -227,31 +236,29 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   if (auto* p = root["domain"]["periodic"].as_array())
     for (int a = 0; a < D; ++a) sc.periodic[a] = *(*p)[a].value<bool>();
   sc.spacing = *get("particles", "spacing").value<double>();
-  sc.method = *get("method", "name").value<std::string>();
-  const bool mps = sc.method == "mps", isph = sc.method == "isph", swe = sc.method == "swe";
-  // ISPH: the ISPH paper's cubic spline with h = 1.2 d.
+  load_method_section(root, val, sc);
+  const MethodHooks& hooks = find_method_spec(sc.method)->hooks;
+  // A section or key that belongs to another method ([swe] under wcsph, [time] step_rule under mps).
+  for (auto& owner : method_spec_names()) {
+    if (owner == sc.method) continue;
+    for (auto& owned : find_method_spec(owner)->owns) {
+      const auto dot = owned.find('.');
+      if (dot == std::string::npos && written.count(owned) && find_section(owned)->array_of_tables)
+        val.fail_entry(root, owned, 0, "min", "[[" + owned + "]] #0 is for method " + owner);
+      if (dot == std::string::npos && written.count(owned))
+        val.fail(root[owned].node(), owned, "[" + owned + "] is for [method] name = \"" + owner + "\"");
+      if (dot != std::string::npos && written_keys.count(owned)) {
+        const std::string section = owned.substr(0, dot), key = owned.substr(dot + 1);
+        val.fail(root[section][key].node(), owned, "[" + section + "] " + key + " is for method " + owner);
+      }
+    }
+  }
+  const bool swe = sc.method == "swe";
   sc.swe.influence_ratio = *get("swe", "influence_ratio").value<double>();
   sc.disorder = root["particles"]["disorder"].value_or(0.0);
   sc.seed = static_cast<std::uint64_t>(root["particles"]["seed"].value_or(1LL));
-  if (swe && sc.disorder > 0)
-    val.fail(root["particles"]["disorder"].node(), "particles.disorder", "method 'swe' places its particles on the lattice; disorder is for wcsph, mps and isph");
-  sc.smoothing_ratio = root["particles"]["smoothing_ratio"].value_or(mps ? (D == 2 ? 3.1 : 2.1) : isph ? 1.2 : swe ? sc.swe.influence_ratio : 1.5);
-  sc.kernel = root["particles"]["kernel"].value_or(std::string(mps ? "mps" : isph ? "cubic_spline" : swe ? "spiky" : "wendland_c2"));
-  if (swe) {
-    if (D != 2) val.fail(root["scene"]["dimension"].node(), "scene.dimension", "method 'swe' is 2D (a plan view: x and y horizontal); set dimension = 2");
-    if (sc.kernel != "spiky")
-      val.fail(root["particles"]["kernel"].node(), "particles.kernel", "method 'swe' uses the spiky kernel (eq. 8): leave kernel out");
-    if (root["particles"]["smoothing_ratio"])
-      val.fail(root["particles"]["smoothing_ratio"].node(), "particles.smoothing_ratio", "method 'swe' sets r_e from the particle areas: use [swe] influence_ratio");
-    if (root["physics"]["gravity"])
-      val.fail(root["physics"]["gravity"].node(), "physics.gravity", "method 'swe' has no in-plane gravity: set [swe] gravity (along -z) and the bed's slope in [[bed_ramp]] or [bed]");
-  } else {
-    for (const char* sec : {"swe", "bed", "bed_hump", "bed_ramp", "splitting"})
-      if (written.count(sec)) val.fail(root[sec].node(), sec, std::string("[") + sec + "] is for [method] name = \"swe\"");
-  }
-  if (mps && sc.kernel != "mps")
-    val.fail(root["particles"]["kernel"].node(), "particles.kernel",
-             "method 'mps' uses the MPS weight: kernel must be \"mps\" (or left out), not '" + sc.kernel + "'");
+  sc.smoothing_ratio = root["particles"]["smoothing_ratio"].value_or(hooks.smoothing_ratio ? hooks.smoothing_ratio(sc) : 1.5);
+  sc.kernel = root["particles"]["kernel"].value_or(hooks.kernel ? hooks.kernel(D) : std::string("wendland_c2"));
   sc.reorder_interval = static_cast<int>(*get("particles", "reorder_interval").value<long long>());
   sc.neighbour_skin = *get("particles", "neighbour_skin").value<double>();
   sc.density = *get("material", "density").value<double>();
@@ -262,66 +269,17 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.gravity.assign(D, 0.0);
   sc.gravity[D - 1] = -9.81;
   if (root["physics"]["gravity"]) sc.gravity = vec_of(get("physics", "gravity"));
-  sc.delta = *get("method", "delta").value<double>();
-  sc.alpha = *get("method", "artificial_viscosity").value<double>();
-  sc.beta = *get("method", "artificial_viscosity_quadratic").value<double>();
-  sc.wall_slip = *get("method", "wall_slip").value<bool>();
-  sc.hydrostatic_init = *get("method", "hydrostatic_init").value<bool>();
-  sc.surface_threshold = *get("method", "surface_threshold").value<double>();
-  sc.source_relaxation = *get("method", "source_relaxation").value<double>();
-  sc.source_density =
-      root["method"]["source_density"].value_or(std::string(D == 2 ? "smooth" : "number_density"));
-  sc.source_support = *get("method", "source_support").value<double>();
-  sc.wall_pressure_layers = static_cast<int>(*get("method", "wall_pressure_layers").value<long long>());
-  sc.isph_description = *get("method", "description").value<std::string>();
-  sc.ppe_laplacian = *get("method", "ppe_laplacian").value<std::string>();
-  sc.viscous_laplacian = *get("method", "viscous_laplacian").value<std::string>();
-  sc.pressure_gradient = *get("method", "pressure_gradient").value<std::string>();
-  sc.uncorrected_divergence_det = *get("method", "uncorrected_divergence_det").value<double>();
-  sc.symmetric_gradient_det = *get("method", "symmetric_gradient_det").value<double>();
-  sc.free_surface_pressure = *get("method", "free_surface_pressure").value<std::string>();
-  sc.isph_wall_rows = *get("method", "wall_rows").value<std::string>();
-  // ISPH's one wall layer with normals is a zigzag on the lattice around a curve, and the ring
-  // that replaced it there was not stable (docs/isph.md, "Round and mesh containers"): a round
-  // or mesh container with moving particles takes the layers of the other methods and Adami's
-  // wall pressure as rows. The Eulerian pipe keeps its ring (no contact line, validated).
-  if (isph) {
-    bool curved_container = false;
-    if (auto* solids = root["solid"].as_array())
-      for (std::size_t i = 0; i < solids->size(); ++i)
-        curved_container = curved_container || (root["solid"][i]["container"].value_or(false) &&
-                                                root["solid"][i]["shape"].value_or(std::string("box")) != "box" &&
-                                                !(sc.isph_description == "eulerian" &&
-                                                  root["solid"][i]["shape"].value_or(std::string()) != "mesh"));
-    if (curved_container && !wall_rows_named) sc.isph_wall_rows = "adami";
-    if (curved_container && sc.isph_wall_rows != "adami")
-      val.fail(&get("method", "wall_rows"), "method.wall_rows",
-               "wall_rows = \"" + sc.isph_wall_rows +
-                   "\" keeps one wall layer with normals, which a round or mesh container does not hold stably (a "
-                   "half-full ball at rest blew up at t = 0.36 s); leave wall_rows out or set \"adami\"");
-  }
-  const bool isph_one_layer = isph && sc.isph_wall_rows != "adami";
-  // The default layers of [[wall]] and [[solid]]: ISPH's one with normals (ISPH paper section 4),
-  // or, with wall_rows = "adami" and for the other methods, enough to cover the support.
-  const int covering = isph_one_layer ? 1 : static_cast<int>(std::ceil(sc.support_radius() / sc.spacing - 1e-9));
-  sc.isph_confined = *get("method", "confined").value<bool>();
-  sc.compression_relaxation = *get("method", "compression_relaxation").value<double>();
-  sc.compression_density = *get("method", "compression_density").value<std::string>();
-  sc.shifting_model = root["shifting"]["model"].value_or(std::string(isph ? "density" : "none"));
-  if (sc.method == "wcsph" && sc.shifting_model == "density")
-    val.fail(root["shifting"]["model"].node(), "shifting.model",
-             "[shifting] model = \"density\" is ISPH's (its beta, eqs. 19-25); wcsph takes none, fickian, optimised or xsph");
-  if (mps && sc.shifting_model != "none")
-    val.fail(root["shifting"]["model"].node(), "shifting.model", "method mps has no particle shifting; leave [shifting] out");
+  // The method's defaults and checks that depend on the scene (before its geometry is read).
+  if (hooks.resolve) hooks.resolve(sc, root, val);
+  // The default layers of [[wall]] and [[solid]]: enough to cover the support, or the method's.
+  const int covering = static_cast<int>(std::ceil(sc.support_radius() / sc.spacing - 1e-9));
+  const int default_layers = hooks.wall_layers ? hooks.wall_layers(sc) : covering;
+  sc.shifting_model = root["shifting"]["model"].value_or(hooks.shifting);
   sc.shifting_coefficient = *get("shifting", "coefficient").value<double>();
   sc.fickian_coefficient = *get("shifting", "fickian_coefficient").value<double>();
   sc.anti_clumping = *get("shifting", "anti_clumping").value<double>();
   sc.max_shift = *get("shifting", "max_shift").value<double>();
   sc.xsph_epsilon = *get("shifting", "xsph_epsilon").value<double>();
-  sc.clamp_negative_pressure = *get("method", "clamp_negative_pressure").value<bool>();
-  sc.collision_distance = *get("method", "collision_distance").value<double>();
-  sc.collision_restitution = *get("method", "collision_restitution").value<double>();
-  sc.wall_collision_distance = *get("method", "wall_collision_distance").value<double>();
   {
     auto& sv = sc.solver;
     auto str = [&](const char* key) { return *get("solver", key).value<std::string>(); };
@@ -337,21 +295,14 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     sv.post_smoothing = static_cast<int>(integer("post_smoothing"));
     sv.bottom_smoothing = static_cast<int>(integer("bottom_smoothing"));
     sv.bottom_size = integer("bottom_size");
-    sv.jacobi_weight = root["solver"]["jacobi_weight"].value_or(isph ? 2.0 / 3.0 : 1.0);
+    sv.jacobi_weight = root["solver"]["jacobi_weight"].value_or(hooks.jacobi_weight);
   }
   sc.end_time = *get("time", "end").value<double>();
-  sc.cfl = root["time"]["cfl"].value_or(swe ? 0.5 : 0.2);
+  sc.cfl = root["time"]["cfl"].value_or(hooks.cfl);
   sc.fixed_dt = *get("time", "dt").value<double>();
   sc.max_steps = *get("time", "max_steps").value<long long>();
   sc.dt_min = *get("time", "dt_min").value<double>();
   sc.step_rule = *get("time", "step_rule").value<std::string>();
-  sc.integrator = *get("method", "integrator").value<std::string>();
-  sc.velocity_smoothing = *get("method", "velocity_smoothing").value<double>();
-  for (auto [sec, key, set] : {std::tuple{"time", "step_rule", sc.step_rule != "cfl"},
-                               std::tuple{"method", "integrator", integrator_named},
-                               std::tuple{"method", "velocity_smoothing", sc.velocity_smoothing > 0}})
-    if (set && sc.method != "wcsph")
-      val.fail(root[sec][key].node(), std::string(sec) + "." + key, std::string("[") + sec + "] " + key + " is for method wcsph");
   sc.output_interval = root["output"]["interval"].value_or(sc.end_time / 20.0);
   if (sc.output_interval <= 0) sc.output_interval = sc.end_time / 20.0;
   sc.probe_interval = root["output"]["probe_interval"].value_or(sc.output_interval / 10.0);
@@ -555,14 +506,10 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   }
   if (sc.fluid.empty() && sc.imports.empty() && !root["elastic"])
     val.fail(root["fluid"].node(), "fluid", "the scene has no [[fluid]] block, no [[import]] and no [[elastic]] body");
-  // MPS: the wall layers a pressure-solved first layer needs behind it for a complete number
-  // density (its dummy particles), for [[wall]] and [[solid]] alike.
-  const int mps_layers =
-      sc.wall_pressure_layers + static_cast<int>(std::floor(sc.support_radius() / sc.spacing + 1e-9));
   if (auto* arr = root["wall"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
       WallBox w{vec_of(*where("wall", i, "min")), vec_of(*where("wall", i, "max")),
-                static_cast<int>(root["wall"][i]["layers"].value_or(static_cast<long long>(covering))),
+                static_cast<int>(root["wall"][i]["layers"].value_or(static_cast<long long>(default_layers))),
                 *root["wall"][i]["open_top"].value<bool>(), {}, {}};
       w.open_ends.assign(D, false);
       if (auto* open = root["wall"][i]["open_ends"].as_array())
@@ -580,19 +527,12 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       if (!inside(lo, hi))
         val.fail(where("wall", i, "min"), path_of("wall", i, "min"),
                  "[[wall]] #" + std::to_string(i) + " with its " + std::to_string(w.layers) + " layers lies outside the domain");
-      if (isph_one_layer && w.layers != 1)
-        val.fail(root["wall"][i]["layers"].node() ? root["wall"][i]["layers"].node() : &(*arr)[i], path_of("wall", i, "layers"),
-                 "[[wall]] #" + std::to_string(i) + ": method isph uses one layer of wall particles (with normals); leave layers out or set 1");
-      if (!isph_one_layer && thick + 1e-12 < sc.support_radius()) {
+      // Layers that cover the support, unless the method keeps fewer (ISPH's one with normals;
+      // its resolve hook checks them).
+      if (default_layers >= covering && thick + 1e-12 < sc.support_radius()) {
         std::ostringstream m;
         m << "[[wall]] #" << i << ": " << w.layers << " layers (" << thick << " m) do not cover the support radius "
           << sc.support_radius() << " m; use layers >= " << covering;
-        val.fail(root["wall"][i]["layers"].node() ? root["wall"][i]["layers"].node() : &(*arr)[i], path_of("wall", i, "layers"), m.str());
-      }
-      if (mps && w.layers < mps_layers) {
-        std::ostringstream m;
-        m << "[[wall]] #" << i << ": " << w.layers << " layers leave the innermost wall particles short of dummy particles; method mps needs layers >= wall_pressure_layers + floor(r_e / spacing) = "
-          << mps_layers;
         val.fail(root["wall"][i]["layers"].node() ? root["wall"][i]["layers"].node() : &(*arr)[i], path_of("wall", i, "layers"), m.str());
       }
       sc.walls.push_back(std::move(w));
@@ -633,7 +573,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       SolidSpec b;
       b.name = t["name"].value_or("solid" + std::to_string(i));
       b.shape = *t["shape"].value<std::string>();
-      b.layers = static_cast<int>(t["layers"].value_or(static_cast<long long>(covering)));
+      b.layers = static_cast<int>(t["layers"].value_or(static_cast<long long>(default_layers)));
       b.velocity.assign(D, 0.0);
       if (auto* v = where("solid", i, "velocity")) b.velocity = vec_of(*v);
       if (auto* motion = where("solid", i, "displacement")) {
@@ -641,10 +581,6 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
         for (auto& e : *motion->as_array()) b.displacement.push_back(field_text(e));
         b.displacement_where = val.location(motion, path_of("solid", i, "displacement"));
       }
-      const bool moves = where("solid", i, "displacement") || where("solid", i, "displacement_table");
-      need(!(moves && isph && sc.isph_description == "eulerian"),
-           where("solid", i, "displacement") ? "displacement" : "displacement_table",
-           "moves, but method isph with description = \"eulerian\" keeps every particle in place");
       if (auto table = t["displacement_table"].value<std::string>()) {
         need(!where("solid", i, "velocity") && !where("solid", i, "displacement"), "displacement_table",
              "has displacement_table with velocity or displacement; give one");
@@ -698,28 +634,6 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       const auto [outer_min, outer_max] = solid_extent(b);
       need(inside(outer_min, outer_max), b.shape == "box" ? "min" : b.shape == "mesh" ? "mesh" : "centre",
            b.container ? "lies (partly) outside the domain with its layers" : "lies (partly) outside the domain");
-      need(!isph_one_layer || b.layers == 1, "layers", "method isph uses one layer of wall particles (with normals); leave layers out or set 1");
-      if (mps && b.shape != "mesh") {
-        // MPS's pressure-solved first layer needs its dummy layers behind it (a complete number
-        // density), as for [[wall]]: a paddle two spacings thick read 63% of the hydrostatic
-        // thrust, its wall particles flagged as free surface.
-        const int needed = mps_layers;
-        need(b.layers >= needed, "layers",
-             "has " + std::to_string(b.layers) + " layers; method mps needs layers >= wall_pressure_layers + floor(r_e / spacing) = " +
-                 std::to_string(needed));
-        double thinnest = 2 * b.radius / sc.spacing;
-        if (b.shape == "box") {
-          thinnest = 1e300;
-          for (int a = 0; a < D; ++a)
-            if (b.endless.empty() || !b.endless[a]) thinnest = std::min(thinnest, (b.max[a] - b.min[a]) / sc.spacing);
-        }
-        if (!b.container && thinnest < needed - 1e-9) {
-          std::ostringstream m;
-          m << "is " << thinnest << " spacings thick; method mps needs " << needed
-            << " (its first layer's dummy particles behind it: wall_pressure_layers + floor(r_e / spacing))";
-          need(false, b.shape == "box" ? "max" : "radius", m.str());
-        }
-      }
       for (auto& other : sc.solids)
         need(other.name != b.name, "name", "has the name of another solid, '" + b.name + "'");
       for (std::size_t k = 0; k < sc.solids.size(); ++k) {
@@ -790,11 +704,6 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       FixedPressureBox b{vec_of(*where("fixed_pressure", i, "min")), vec_of(*where("fixed_pressure", i, "max")),
                          std::vector<double>(D, 0.0), *root["fixed_pressure"][i]["pressure"].value<double>()};
       if (auto* g = where("fixed_pressure", i, "gradient")) b.gradient = vec_of(*g);
-      // Particles that move would carry the value away, and the other methods have no such rows.
-      if (!isph || sc.isph_description != "eulerian")
-        val.fail(&(*arr)[i], path_of("fixed_pressure", i, "min"),
-                 "[[fixed_pressure]] #" + std::to_string(i) +
-                     " needs [method] name = \"isph\" with description = \"eulerian\" (fixed particles)");
       for (int a = 0; a < D; ++a)
         if (!(b.max[a] > b.min[a]))
           val.fail(where("fixed_pressure", i, "max"), path_of("fixed_pressure", i, "max"),
@@ -805,10 +714,6 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       sc.fixed_pressure.push_back(std::move(b));
     }
   }
-  // Without a [[fixed_pressure]] box the confined pressure equation has no Dirichlet row: the
-  // gauge (src/systems/pressure/pressure_gauge.hpp) sets its level, as in a periodic box.
-  if (sc.isph_confined && !isph)
-    val.fail(root["method"]["confined"].node(), "method.confined", "confined is for method isph");
   if (auto* arr = root["probe"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
       ProbeSpec p{*root["probe"][i]["name"].value<std::string>(), *root["probe"][i]["type"].value<std::string>(), {}};
@@ -959,14 +864,14 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   // The neighbour search tiles a periodic axis with at least three cells of its search radius:
   // the support, plus the Verlet skin, plus (MPS, ISPH) the step's own motion (their
   // parameters' search_radius()).
-  const double search_radius = sc.support_radius() + sc.neighbour_skin * sc.spacing +
-                               (isph ? 3.0 * sc.cfl * sc.spacing : mps ? 2.5 * sc.cfl * sc.spacing : 0.0);
+  const double search_radius =
+      sc.support_radius() + sc.neighbour_skin * sc.spacing + hooks.step_motion * sc.cfl * sc.spacing;
   for (int a = 0; a < D; ++a)
     if (sc.periodic[a] && (sc.domain_max[a] - sc.domain_min[a]) < 3 * search_radius)
       val.fail(get("domain", "periodic").as_array()->get(a), "domain.periodic",
                "periodic axis " + std::to_string(a) + " is shorter than three neighbour-search radii (3 x (support + neighbour_skin spacings" +
-                   std::string(isph || mps ? " + the step's motion" : "") + ") = " + std::to_string(3 * search_radius) + " m)");
-  if ((mps || isph) && sc.solver.preconditioner == "multigrid")
+                   std::string(hooks.step_motion > 0 ? " + the step's motion" : "") + ") = " + std::to_string(3 * search_radius) + " m)");
+  if (hooks.solves_pressure && sc.solver.preconditioner == "multigrid")
     for (int a = 0; a < D; ++a)
       if (sc.periodic[a])
         val.fail(get("domain", "periodic").as_array()->get(a), "domain.periodic",
@@ -974,12 +879,8 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
                      "); use [solver] preconditioner = \"jacobi\" with a periodic domain");
   if (sc.fixed_dt > sc.end_time) val.fail(root["time"]["dt"].node(), "time.dt", "time.dt is larger than time.end");
   load_heat_and_rheology(root, val, sc);
-  // The leapfrog is WCSPH's default (the same answer as the midpoint at half the force
-  // evaluations: docs/wcsph.md). Elastic bodies are moved by the midpoint's stages only, and the
-  // leapfrog's conduction step is half the midpoint's (time_step.hpp), so a scene with either
-  // that does not name an integrator takes the midpoint (decided here, once the heat is known).
-  if (!integrator_named && (root["elastic"] || sc.conductivity > 0)) sc.integrator = "midpoint";
   load_elastic(root, val, sc);
+  if (hooks.validate) hooks.validate(sc, root, val);
   // The neighbour search's cell grid covers the domain with cells of the support radius (4
   // bytes per cell): a domain far larger than the particles' extent at a tiny spacing (1e-6 m
   // particles in a 1e4 m box) would ask for more memory than the machine has.

@@ -16,6 +16,7 @@
 #include "geometry/triangle_mesh.hpp"
 #include "scene/motion_table.hpp"
 #include "scene/particle_import.hpp"
+#include "scene/registered_keys.hpp"
 #include "systems/rheology/rheology.hpp"
 #include "systems/swe/bed.hpp"
 
@@ -180,35 +181,17 @@ struct Scene {
   double temperature = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> gravity;
   std::string method = "wcsph";
-  double delta = 0.1, alpha = 0.02, beta = 0;
-  bool wall_slip = false, hydrostatic_init = true;
-  // method mps
-  double surface_threshold = 0.97, source_relaxation = 0.2;
-  std::string source_density = "smooth";  // the loader's default: smooth in 2D, number_density in 3D
-  double source_support = 0.9;
-  int wall_pressure_layers = 1;
-  double collision_distance = 0.5, wall_collision_distance = 0.8, collision_restitution = 0.2;
-  bool clamp_negative_pressure = true;
-  // method isph
-  std::string isph_description = "ale", ppe_laplacian = "corrected", viscous_laplacian = "corrected",
-              pressure_gradient = "corrected";
-  double uncorrected_divergence_det = 0.8;
-  double symmetric_gradient_det = 0.8;
-  std::string free_surface_pressure = "extrapolated";
-  bool isph_confined = false;  // no free surface: the fluid fills its walls (a pipe)
+  // The method's own [method] keys, validated against what it registered, defaults inserted
+  // (scene/registered_keys.hpp); read by the method's builder.
+  MethodParams method_params;
   // [shifting]
   std::string shifting_model = "density";
   double shifting_coefficient = 0.005;
-  std::string isph_wall_rows = "corrected";
-  double compression_relaxation = 0.0;
-  std::string compression_density = "first_shell";
   double fickian_coefficient = 2.0, anti_clumping = 0.2, max_shift = 0.2, xsph_epsilon = 0.5;
   SolverSpec solver;
   SweSpec swe;
   double end_time = 0, cfl = 0.2, fixed_dt = 0, dt_min = 1e-9;
   std::string step_rule = "cfl";       // wcsph: cfl or seed001 (seed 001 eq. 35)
-  std::string integrator = "leapfrog";  // wcsph: leapfrog (seed 001 eqs. 15-17) or midpoint
-  double velocity_smoothing = 0;        // wcsph: XSPH epsilon (seed 001 eq. 36); 0: off
   long long max_steps = 0;
   double output_interval = 0, probe_interval = 0, checkpoint_interval = 0;
   std::vector<std::string> output_fields;
@@ -216,11 +199,6 @@ struct Scene {
   std::vector<WallBox> walls;
   std::vector<SolidSpec> solids;
   std::vector<ElasticSpec> elastic;
-  double solid_alpha = 1.0, solid_beta = 1.0;  // [method] solid_artificial_viscosity(_quadratic)
-  int solid_substeps = 1;                      // [method] solid_substeps
-  std::string solid_formulation = "total_lagrangian";  // [method] solid_formulation
-  double solid_artificial_stress = 0.3;               // [method] solid_artificial_stress
-  std::string solid_walls = "contact";                // [method] solid_walls
   std::vector<MeshSpec> meshes;
   std::vector<ImportSpec> imports;
   std::vector<FixedPressureBox> fixed_pressure;

@@ -3,41 +3,19 @@
 #include <algorithm>
 #include <sstream>
 
-#include "methods/method.hpp"
-#include "methods/system_registry.hpp"
+#include "scene/registered_keys.hpp"
 #include "systems/kernels/kernel.hpp"
 
 namespace ryushi {
 
 namespace {
 
-KeySpec positive(std::string key, std::string unit, std::string def, std::string doc, bool required = false) {
-  KeySpec k{std::move(key), KeyType::Float, std::move(unit), std::move(def), std::move(doc), required};
-  k.min = 0.0;
-  k.min_exclusive = true;
-  return k;
-}
-KeySpec non_negative(std::string key, std::string unit, std::string def, std::string doc) {
-  KeySpec k{std::move(key), KeyType::Float, std::move(unit), std::move(def), std::move(doc)};
-  k.min = 0.0;
-  return k;
-}
-KeySpec ranged(KeySpec k, std::optional<double> lo, std::optional<double> hi) {
-  k.min = lo;
-  k.max = hi;
-  return k;
-}
-KeySpec choice(std::string key, std::string def, std::string doc, std::vector<std::string> choices,
-               bool required = false) {
-  KeySpec k{std::move(key), KeyType::String, "", std::move(def), std::move(doc), required};
-  k.choices = std::move(choices);
-  return k;
-}
+using namespace keyspec;
 
 // "Method: a = ...; b = ..." from the method registry (each method registers its own line).
 std::string methods_doc() {
   std::string doc = "Method:";
-  for (auto& name : method_names()) doc += " " + name + " = " + method_registry_entry(name).doc + ";";
+  for (auto& name : method_spec_names()) doc += " " + name + " = " + find_method_spec(name)->doc + ";";
   doc.back() = '.';
   return doc;
 }
@@ -101,42 +79,8 @@ std::vector<SectionSpec> build() {
   s.push_back({"physics", false, false, "Body forces.",
                {{"gravity", K::Vector, "m/s^2", "(0, -9.81) in 2D; (0, 0, -9.81) in 3D",
                  "Gravitational acceleration. The last axis is 'up' for probes and hydrostatic initialisation."}}});
-  s.push_back({"method", false, false, "The particle method and its parameters.",
-               {choice("name", "\"wcsph\"", methods_doc(), method_names()),
-                non_negative("delta", "", "0.1", "delta-SPH density diffusion coefficient (seed 002 eq. 18); 0 turns it off."),
-                non_negative("artificial_viscosity", "", "0.02", "Monaghan artificial viscosity alpha (linear term, seed 002 eq. 23 'A')."),
-                non_negative("artificial_viscosity_quadratic", "", "0.0", "Quadratic term beta ('B')."),
-                {"wall_slip", K::Bool, "", "false", "With laminar viscosity: free-slip walls (true) or no-slip (false)."},
-                {"hydrostatic_init", K::Bool, "", "true",
-                 "Start fluid with hydrostatic pressure and the matching density (mass = density * d^dim), so a resting column starts in equilibrium. mps: the hydrostatic pressure is the first solve's initial guess."},
-                ranged({"surface_threshold", K::Float, "", "0.97", "mps: a fluid or wall particle with number density n* < surface_threshold * n0 is on the free surface (pressure 0, Dirichlet). 0.97 is Koshizuka's value."}, 0.5, 1.0),
-                ranged({"source_relaxation", K::Float, "", "0.2", "mps: the Poisson source (BMG paper eq. 4) is multiplied by this relaxation factor, as in the paper's dam break (0.2)."}, 1e-6, 1.0),
-                choice("source_density", "(smooth in 2D, number_density in 3D)", "mps: the density whose deviation is the Poisson source (BMG paper eq. 4's (n* - n0)/n0): smooth, the sum of a Wendland C2 kernel of support source_support * r_e over the same neighbours against its value on the lattice; or number_density, n* with the MPS weight r_e/r - 1 (Koshizuka's and the BMG paper's). The weight is singular at r = 0, so on disordered particles n* reads high at an unchanged area, and holding n* = n0 lets the fluid's area grow as the flow disorders it: in the sloshing tank the interior's mean Voronoi cell grew 0.9% by t = 0.3 s with number_density (0.2% with smooth, WCSPH 0.03%) and the water gained 18% of the wave's energy, none with smooth (docs/mps.md). The free-surface rule and the Laplacian keep the weight. In 3D (r_e = 2.1 l0) the smooth kernel's support holds only the first three shells of the lattice and reads a disordered interior 1.8% dense where n* reads it 2.0% sparse in the 3D dam break: neither measure is sound there, and the 3D default stays the paper's.", {"smooth", "number_density"}),
-                ranged({"source_support", K::Float, "", "0.9", "mps: with source_density = smooth, the Wendland kernel's support as a fraction of r_e (its h = source_support * r_e / 2). In the two-period sloshing tank every value from 0.8 to 1.0 keeps the energy at or below its start; 0.9 keeps the most of the wave with the period (0.101 m after two periods, period 1.190 s; 0.8: 0.080 m; 1.0: 0.0995 m with the period 5.9% long; docs/mps.md)."}, 0.5, 1.0),
-                ranged({"wall_pressure_layers", K::Integer, "", "1", "mps: the innermost wall layers whose pressure is solved (wall particles); the outer layers are dummy particles that only complete the number density. layers must be >= wall_pressure_layers + floor(r_e / spacing)."}, 1, 8),
-                ranged({"collision_distance", K::Float, "spacing", "0.5", "mps: particles closer than this (times the spacing) that still approach collide inelastically (Koshizuka's collision model, mps_collision system); 0 leaves the system out."}, 0.0, 1.0),
-                ranged({"wall_collision_distance", K::Float, "spacing", "0.8", "mps: the collision distance between a fluid and a wall or dummy particle. Longer than between fluid particles: a particle crossing a 3D wall layer through the middle of a lattice square passes 0.71 l0 from the nearest wall particles, and without it the 3D dam break leaks through the far wall at the impact. A fluid particle at rest is one spacing from the wall particles and never collides."}, 0.0, 1.0),
-                ranged({"collision_restitution", K::Float, "", "0.2", "mps: restitution coefficient e of the collision model."}, 0.0, 1.0),
-                {"clamp_negative_pressure", K::Bool, "", "true", "mps: negative pressure from the solve is taken as 0 in the pressure gradient (no tension in a free-surface liquid)."},
-                choice("description", "\"ale\"", "isph: how particles move (ISPH paper eqs. 6-7): lagrangian (with the fluid, w = v, no shifting), ale (w = v + dr_shift/dt with the [shifting] model, velocities Taylor-corrected to the shifted position) or eulerian (fixed particles, w = 0, the convective term in the predictor).", {"lagrangian", "ale", "eulerian"}),
-                choice("ppe_laplacian", "\"corrected\"", "isph: Laplacian of the pressure equation: standard (Morris), corrected (Fatehi-Manzari, ISPH paper eqs. 11-14) or sph2 (trace of the SPH(2) Hessian).", {"standard", "corrected", "sph2"}),
-                choice("viscous_laplacian", "\"corrected\"", "isph: Laplacian of the viscous term (eq. 15): standard, corrected or sph2.", {"standard", "corrected", "sph2"}),
-                choice("pressure_gradient", "\"corrected\"", "isph: pressure gradient of the corrector: corrected (difference form with L_i, eq. 9), symmetric (sum (p_i + p_j) V_j gW_ij, I-SPH(2) eq. 11: momentum-conserving, pushes particles apart in proportion to the pressure; a collapsing column's pressure diverges with it from a/d = 100 up, docs/isph.md) or hybrid (symmetric where the free surface cuts the support: det(M_i) < symmetric_gradient_det and a free-surface particle in it; corrected everywhere else, walls and corners included).", {"corrected", "symmetric", "hybrid"}),
-                choice("free_surface_pressure", "\"extrapolated\"", "isph: where p = 0 on the free surface: extrapolated (half a spacing outside each surface particle along its normal: p_i + d/2 N . grad p = 0) or particle (p_i = 0 at the surface particles, the ISPH paper's eq. 18, which puts the surface d/2 too deep).", {"extrapolated", "particle"}),
-                {"confined", K::Bool, "", "false", "isph: the fluid fills its walls and has no free surface (a pipe, a channel): no free-surface detection and no p = 0 rows, so no particle beside a wide gap to a round wall is taken for surface. The pressure's level is set by a [[fixed_pressure]] box where there is one; without one (a periodic box, a closed box full of water) the equation has no Dirichlet row and its level is a convention, the lowest pressure 0 (src/systems/pressure/pressure_gauge.hpp). A closed box needs [[wall]] open_top = false (or a lid): with the default open top the water's upper edge has no condition at all, and the solve fails within a few steps (a 2D tank filled to its rim: step 105)."},
-                choice("wall_rows", "\"corrected\"", "isph: the walls' pressure rows. corrected and shepard keep one wall layer with normals and give each wetted wall particle a Neumann row (eq. 17, n . grad p = rho0/dt (v* - v_wall) . n) with the corrected gradient at the wall particle (the paper's) or with one-sided differences to the fluid neighbours averaged with W (positive weights, no coupling between wall particles). adami keeps the layers that cover the kernel support, as wcsph does, and gives every wall particle with fluid in its support Adami's wall pressure as its row, p_w - sum_f s_f p_f = rho0 (g - a_w) . sum_f s_f (x_w - x_f) with s_f = W_wf / sum W; the fluid rows' divergence sees the walls moving at v_wall + dt g. The default, and the only choice, where a round or mesh container holds moving particles (one layer on a curve is not stable; docs/isph.md, \"Round and mesh containers\").", {"corrected", "shepard", "adami"}),
-                ranged({"compression_relaxation", K::Float, "", "0.0", "isph: alpha of the stabilised source (Asai et al. 2012): interior rows add alpha rho0 (<rho>_i/rho0 - 1)/tau^2 (compression_density says which density), tau the larger of dt and the step of the flow at rest (cfl d / sqrt(2 g H)); it keeps particles from pairing up in violent flows; 0 turns it off (the paper's divergence-free source)."}, 0.0, 1.0),
-                choice("compression_density", "\"first_shell\"", "isph with compression_relaxation > 0: the density error the source answers. first_shell: eq. 19 over the lattice's first shell (which one wall layer fills), compression only; nothing returns a slow dilation (a sloshing tank's water grew 0.3% over 200 periods). full_support: where no surface particle lies in the support, the kernel sum over the whole support (the wall's two missing layers completed) against the lattice's, both ways, a dilation counted at most 1% (a deeper deficit is air in a splash); first_shell where the support reaches the surface. Over 200 periods of the sloshing tank at H/d = 20 the energy's period mean then stays within 0.70 J/m of its running minimum (2.37 with first_shell; docs/stability.md).", {"first_shell", "full_support"}),
-                ranged({"uncorrected_divergence_det", K::Float, "", "0.8", "isph: where det(M_i) (M_i = L_i^-1) is below this, the divergence of the pressure source is not corrected (I-SPH(2) section 3(2))."}, 0.0, 1.0),
-                ranged({"symmetric_gradient_det", K::Float, "", "0.8", "isph with pressure_gradient = \"hybrid\": where det(M_i) is below this and a free-surface particle lies in the support, the corrector takes the symmetric gradient (with the wall's two missing layers) instead of the corrected one. On a lattice (cubic spline, h = 1.2 d) the interior has 0.98, a flat wall's first row 0.92, the box's corner particle 0.69. At 0.6 the a/d = 20 dam break throws 562 of its 800 particles over the walls by t = 2.2 s (0.7 and 0.8: 1)."}, 0.0, 1.0),
-                non_negative("solid_artificial_viscosity", "", "1.0", "wcsph with [[elastic]]: A of the solid's artificial viscosity (seed 002 eq. 23; the seed uses 1)."),
-                non_negative("solid_artificial_viscosity_quadratic", "", "1.0", "wcsph with [[elastic]]: B (the seed uses 1)."),
-                choice("solid_formulation", "\"total_lagrangian\"", "wcsph with [[elastic]]: total_lagrangian: sums over each particle's rest-configuration neighbours, deformation gradient and St Venant-Kirchhoff stress (free of the tensile instability; docs/multiphysics.md); updated: seed 002's own form (eqs. 1, 5-8, 22-26): continuity, Hooke's law with the Jaumann rate, Monaghan's artificial stress, over the current neighbours.", {"total_lagrangian", "updated"}),
-                ranged({"solid_artificial_stress", K::Float, "", "0.3", "wcsph with [[elastic]] and solid_formulation = \"updated\": eps of Monaghan's artificial stress (seed 002 eq. 26; the seed and Gray et al. use 0.3, with exponent n = 4 and W(d) the reference)."}, 0.0, 10.0),
-                choice("solid_walls", "\"contact\"", "wcsph with [[elastic]]: how walls hold a solid. contact: a stiff spring (c_s^2/d)(1 - r/d) inside the spacing, with the artificial viscosity; seed: seed 002 section 4.1, wall particles at rest in the solid's momentum sum with the pressure of eq. 28 interpolated from the solid particles and the density of the solid's equation of state (solid_formulation = \"updated\" only).", {"contact", "seed"}),
-                ranged({"solid_substeps", K::Integer, "", "1", "wcsph with [[elastic]]: the most velocity-Verlet substeps the solids take in one step of the fluid. 1: the step keeps the stiffest body's wave limit cfl h / c_s (c_s = sqrt((K + 4G/3) / rho0)), as in seed 002; N > 1: the step is bounded by N times that limit (with the fluid's own limits) and the solids take ceil(dt / limit) substeps, so a stiff body in slow water does not set the water's step (about c_s / c0 is the useful N; docs/multiphysics.md)."}, 1, 1000),
-                choice("integrator", "\"leapfrog\"", "wcsph: time integration. leapfrog: seed 001 eqs. 15-17, one force evaluation per step, velocity and density on the half steps (the frames show the full-step values predicted from them, eq. 16); midpoint: the two-stage predictor-corrector (seed 002 eqs. 29-31), two force evaluations per step, the same answer at the same step (docs/wcsph.md) for twice the pair work. A scene with [[elastic]] bodies or heat conduction that names none takes the midpoint (the leapfrog does not move solids, and its viscous and conduction step limits are half the midpoint's).", {"midpoint", "leapfrog"}),
-                ranged({"velocity_smoothing", K::Float, "", "0.0", "wcsph: epsilon of XSPH velocity smoothing after each step (seed 001 eq. 36), v_i += eps sum_j m_j/((rho_i + rho_j)/2) (v_j - v_i) W_ij over fluid neighbours; 0 leaves the system out."}, 0.0, 1.0)}});
+  s.push_back({"method", false, false, "The particle method. Its other keys are the chosen method's own (below): a key of another method is an error at the key. A scene run under several methods (--set method.name=...) keeps each method's settings in a [method.<name>] table, read only when that method is the scene's.",
+               {choice("name", "\"wcsph\"", methods_doc(), method_spec_names())}});
   s.push_back({"shifting", false, false, "Particle shifting: isph with description = \"ale\" (docs/isph.md), and wcsph with model = \"fickian\", \"optimised\" or \"xsph\" (docs/wcsph.md).",
                {choice("model", "(density for isph; none for wcsph)", "none; density: density-based shifting (ISPH paper eqs. 19-25; isph only); fickian: dr = -A h |v| dt grad C (Lind et al. 2012, Skillen et al. 2013), tangential only on the flagged surface; optimised: the same with only the tangential part kept in the whole surface region, every particle with a surface particle inside its support (OPS, Khayyer et al. 2017); xsph: transport with the XSPH-smoothed velocity, dr = eps dt sum 2 m_j/(rho_i + rho_j) (v_j - v_i) W_ij (I-SPH(2) eq. 9).", {"none", "density", "fickian", "optimised", "xsph"}),
                 ranged({"coefficient", K::Float, "", "0.005", "density model: C_shift of eq. 20, dr = C_shift h (dr_w + dr_dens)."}, 0.0, 1.0),
@@ -304,7 +248,13 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 }  // namespace
 
 const std::vector<SectionSpec>& scene_schema() {
-  static const std::vector<SectionSpec> schema = build();
+  // Rebuilt when a method or system registers (a plugin): [method] name lists the methods.
+  static std::vector<SectionSpec> schema;
+  static unsigned long built_for = ~0UL;
+  if (built_for != registered_keys_generation()) {
+    schema = build();
+    built_for = registered_keys_generation();
+  }
   return schema;
 }
 
@@ -364,6 +314,30 @@ void key_table(std::ostringstream& out, const std::vector<KeySpec>& keys) {
         << " | " << k.doc << (range.empty() ? "" : " Allowed:" + range + ".") << " |\n";
   }
 }
+// Each method's own [method] keys: a key of one method under another is an error.
+void method_tables(std::ostringstream& out) {
+  for (auto& name : method_spec_names()) {
+    auto& spec = *find_method_spec(name);
+    out << "### `name = \"" << name << "\"`\n\n" << spec.doc << "\n\n";
+    if (!spec.owns.empty()) {  // sections and keys that another method's scene may not write
+      out << "Read only under this method:";
+      for (auto& owned : spec.owns) {
+        const auto dot = owned.find('.');
+        out << (&owned == &spec.owns.front() ? " " : ", ")
+            << (dot != std::string::npos ? "`[" + owned.substr(0, dot) + "] " + owned.substr(dot + 1) + "`"
+                : find_section(owned) && find_section(owned)->array_of_tables ? "`[[" + owned + "]]`"
+                                                                              : "`[" + owned + "]`");
+      }
+      out << ".\n\n";
+    }
+    if (spec.keys.empty()) {
+      out << "No keys besides `name`.\n\n";
+      continue;
+    }
+    key_table(out, spec.keys);
+    out << "\n";
+  }
+}
 }  // namespace
 
 std::string schema_markdown() {
@@ -382,12 +356,13 @@ std::string schema_markdown() {
         << s.doc << "\n\n";
     key_table(out, s.keys);
     out << "\n";
+    if (s.name == "method") method_tables(out);
   }
   out << "## Registered systems (`[[systems]]`)\n\n";
-  for (auto& name : system_registry_names()) {
-    auto& entry = system_registry_entry(name);
+  for (auto& name : system_key_names()) {
+    auto& entry = *find_system_keys(name);
     out << "### `" << name << "`\n\n" << entry.doc << "\n\n";
-    key_table(out, entry.params);
+    key_table(out, entry.keys);
     out << "\n";
   }
   return out.str();

@@ -34,6 +34,32 @@ struct SectionSpec {
   std::vector<KeySpec> keys;
 };
 
+// Shorthands for key tables (the schema's, and those that methods and systems register).
+namespace keyspec {
+inline KeySpec positive(std::string key, std::string unit, std::string def, std::string doc, bool required = false) {
+  KeySpec k{std::move(key), KeyType::Float, std::move(unit), std::move(def), std::move(doc), required};
+  k.min = 0.0;
+  k.min_exclusive = true;
+  return k;
+}
+inline KeySpec non_negative(std::string key, std::string unit, std::string def, std::string doc) {
+  KeySpec k{std::move(key), KeyType::Float, std::move(unit), std::move(def), std::move(doc)};
+  k.min = 0.0;
+  return k;
+}
+inline KeySpec ranged(KeySpec k, std::optional<double> lo, std::optional<double> hi) {
+  k.min = lo;
+  k.max = hi;
+  return k;
+}
+inline KeySpec choice(std::string key, std::string def, std::string doc, std::vector<std::string> choices,
+                      bool required = false) {
+  KeySpec k{std::move(key), KeyType::String, "", std::move(def), std::move(doc), required};
+  k.choices = std::move(choices);
+  return k;
+}
+}  // namespace keyspec
+
 const std::vector<SectionSpec>& scene_schema();
 const SectionSpec* find_section(const std::string& name);
 const KeySpec* find_key(const std::vector<KeySpec>& keys, const std::string& key);

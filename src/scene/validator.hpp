@@ -30,6 +30,12 @@ class Validator {
   [[noreturn]] void fail_at(const toml::source_region* src, const std::string& where_path, const std::string& msg) const {
     throw SceneError(location_at(src, where_path) + ": " + msg);
   }
+  // At key `key` of entry i of [[section]] (at the entry when the scene left the key out).
+  [[noreturn]] void fail_entry(const toml::table& root, const std::string& section, std::size_t i,
+                               const std::string& key, const std::string& msg) const {
+    const toml::node* node = root[section][i][key].node();
+    fail(node ? node : root[section][i].node(), section + "." + std::to_string(i) + "." + key, msg);
+  }
   // "file:line:column" of a key, or the `--set` that gave it.
   std::string location(const toml::node* node, const std::string& where_path) const {
     return location_at(node ? &node->source() : nullptr, where_path);

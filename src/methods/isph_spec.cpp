@@ -1,0 +1,176 @@
+// ISPH's [method] keys and the scene rules that depend on it (scene/registered_keys.hpp):
+// registered with the method in isph.cpp.
+#include "methods/isph_spec.hpp"
+
+#include <cmath>
+
+#include "methods/common_method_keys.hpp"
+#include "scene/scene.hpp"
+#include "scene/validator.hpp"
+
+namespace ryushi {
+
+namespace {
+
+using namespace keyspec;
+
+std::vector<KeySpec> isph_keys() {
+  using K = KeyType;
+  return {
+      choice(
+          "description", "\"ale\"",
+          "isph: how particles move (ISPH paper eqs. 6-7): lagrangian (with the fluid, w = v, no shifting), "
+          "ale (w = v + dr_shift/dt with the [shifting] model, velocities Taylor-corrected to the shifted "
+          "position) or eulerian (fixed particles, w = 0, the convective term in the predictor).",
+          {"lagrangian", "ale", "eulerian"}),
+      choice("ppe_laplacian", "\"corrected\"",
+             "isph: Laplacian of the pressure equation: standard (Morris), corrected (Fatehi-Manzari, ISPH "
+             "paper eqs. 11-14) or sph2 (trace of the SPH(2) Hessian).",
+             {"standard", "corrected", "sph2"}),
+      choice("viscous_laplacian", "\"corrected\"",
+             "isph: Laplacian of the viscous term (eq. 15): standard, corrected or sph2.",
+             {"standard", "corrected", "sph2"}),
+      choice("pressure_gradient", "\"corrected\"",
+             "isph: pressure gradient of the corrector: corrected (difference form with L_i, eq. 9), "
+             "symmetric (sum (p_i + p_j) V_j gW_ij, I-SPH(2) eq. 11: momentum-conserving, pushes particles "
+             "apart in proportion to the pressure; a collapsing column's pressure diverges with it from a/d "
+             "= 100 up, docs/isph.md) or hybrid (symmetric where the free surface cuts the support: det(M_i) "
+             "< symmetric_gradient_det and a free-surface particle in it; corrected everywhere else, walls "
+             "and corners included).",
+             {"corrected", "symmetric", "hybrid"}),
+      choice("free_surface_pressure", "\"extrapolated\"",
+             "isph: where p = 0 on the free surface: extrapolated (half a spacing outside each surface "
+             "particle along its normal: p_i + d/2 N . grad p = 0) or particle (p_i = 0 at the surface "
+             "particles, the ISPH paper's eq. 18, which puts the surface d/2 too deep).",
+             {"extrapolated", "particle"}),
+      {"confined", K::Bool, "", "false",
+       "isph: the fluid fills its walls and has no free surface (a pipe, a channel): no free-surface "
+       "detection and no p = 0 rows, so no particle beside a wide gap to a round wall is taken for surface. "
+       "The pressure's level is set by a [[fixed_pressure]] box where there is one; without one (a periodic "
+       "box, a closed box full of water) the equation has no Dirichlet row and its level is a convention, "
+       "the lowest pressure 0 (src/systems/pressure/pressure_gauge.hpp). A closed box needs [[wall]] "
+       "open_top = false (or a lid): with the default open top the water's upper edge has no condition at "
+       "all, and the solve fails within a few steps (a 2D tank filled to its rim: step 105)."},
+      choice(
+          "wall_rows", "\"corrected\"",
+          "isph: the walls' pressure rows. corrected and shepard keep one wall layer with normals and give "
+          "each wetted wall particle a Neumann row (eq. 17, n . grad p = rho0/dt (v* - v_wall) . n) with the "
+          "corrected gradient at the wall particle (the paper's) or with one-sided differences to the fluid "
+          "neighbours averaged with W (positive weights, no coupling between wall particles). adami keeps "
+          "the layers that cover the kernel support, as wcsph does, and gives every wall particle with fluid "
+          "in its support Adami's wall pressure as its row, p_w - sum_f s_f p_f = rho0 (g - a_w) . sum_f s_f "
+          "(x_w - x_f) with s_f = W_wf / sum W; the fluid rows' divergence sees the walls moving at v_wall + "
+          "dt g. The default, and the only choice, where a round or mesh container holds moving particles "
+          "(one layer on a curve is not stable; docs/isph.md, \"Round and mesh containers\").",
+          {"corrected", "shepard", "adami"}),
+      ranged({"compression_relaxation", K::Float, "", "0.0",
+              "isph: alpha of the stabilised source (Asai et al. 2012): interior rows add alpha rho0 "
+              "(<rho>_i/rho0 - 1)/tau^2 (compression_density says which density), tau the larger of dt and "
+              "the step of the flow at rest (cfl d / sqrt(2 g H)); it keeps particles from pairing up in "
+              "violent flows; 0 turns it off (the paper's divergence-free source)."},
+             0.0, 1.0),
+      choice("compression_density", "\"first_shell\"",
+             "isph with compression_relaxation > 0: the density error the source answers. first_shell: eq. "
+             "19 over the lattice's first shell (which one wall layer fills), compression only; nothing "
+             "returns a slow dilation (a sloshing tank's water grew 0.3% over 200 periods). full_support: "
+             "where no surface particle lies in the support, the kernel sum over the whole support (the "
+             "wall's two missing layers completed) against the lattice's, both ways, a dilation counted at "
+             "most 1% (a deeper deficit is air in a splash); first_shell where the support reaches the "
+             "surface. Over 200 periods of the sloshing tank at H/d = 20 the energy's period mean then stays "
+             "within 0.70 J/m of its running minimum (2.37 with first_shell; docs/stability.md).",
+             {"first_shell", "full_support"}),
+      ranged({"uncorrected_divergence_det", K::Float, "", "0.8",
+              "isph: where det(M_i) (M_i = L_i^-1) is below this, the divergence of the pressure source is "
+              "not corrected (I-SPH(2) section 3(2))."},
+             0.0, 1.0),
+      ranged(
+          {"symmetric_gradient_det", K::Float, "", "0.8",
+           "isph with pressure_gradient = \"hybrid\": where det(M_i) is below this and a free-surface "
+           "particle lies in the support, the corrector takes the symmetric gradient (with the wall's two "
+           "missing layers) instead of the corrected one. On a lattice (cubic spline, h = 1.2 d) the "
+           "interior has 0.98, a flat wall's first row 0.92, the box's corner particle 0.69. At 0.6 the a/d "
+           "= 20 dam break throws 562 of its 800 particles over the walls by t = 2.2 s (0.7 and 0.8: 1)."},
+          0.0, 1.0),
+      wall_slip_key(),
+      hydrostatic_init_key()};
+}
+
+bool one_wall_layer(const Scene& sc) {
+  return sc.method_params.text("wall_rows") != "adami";
+}
+
+void resolve(Scene& sc, const toml::table& root, Validator& val) {
+  auto& params = sc.method_params;
+  // ISPH's one wall layer with normals is a zigzag on the lattice around a curve, and the ring
+  // that replaced it there was not stable (docs/isph.md, "Round and mesh containers"): a round
+  // or mesh container with moving particles takes the layers of the other methods and Adami's
+  // wall pressure as rows. The Eulerian pipe keeps its ring (no contact line, validated).
+  const bool eulerian = params.text("description") == "eulerian";
+  bool curved_container = false;
+  if (auto* solids = root["solid"].as_array())
+    for (std::size_t i = 0; i < solids->size(); ++i) {
+      const std::string shape = root["solid"][i]["shape"].value_or(std::string("box"));
+      curved_container = curved_container || (root["solid"][i]["container"].value_or(false) &&
+                                              shape != "box" && !(eulerian && shape != "mesh"));
+    }
+  if (curved_container && !params.given("wall_rows")) params.set("wall_rows", std::string("adami"));
+  if (curved_container && params.text("wall_rows") != "adami")
+    val.fail(
+        root["method"]["wall_rows"].node(), "method.wall_rows",
+        "wall_rows = \"" + params.text("wall_rows") +
+            "\" keeps one wall layer with normals, which a round or mesh container does not hold stably (a "
+            "half-full ball at rest blew up at t = 0.36 s); leave wall_rows out or set \"adami\"");
+}
+
+// ISPH's one wall layer with normals (ISPH paper section 4); with wall_rows = "adami", enough to
+// cover the support, as for the other methods.
+int wall_layers(const Scene& sc) {
+  return one_wall_layer(sc) ? 1 : static_cast<int>(std::ceil(sc.support_radius() / sc.spacing - 1e-9));
+}
+
+void validate(const Scene& sc, const toml::table& root, Validator& val) {
+  const bool eulerian = sc.method_params.text("description") == "eulerian";
+  const std::string one_layer =
+      "method isph uses one layer of wall particles (with normals); leave layers out or set 1";
+  for (std::size_t i = 0; i < sc.walls.size(); ++i)
+    if (one_wall_layer(sc) && sc.walls[i].layers != 1)
+      val.fail_entry(root, "wall", i, "layers", "[[wall]] #" + std::to_string(i) + ": " + one_layer);
+  for (std::size_t i = 0; i < sc.solids.size(); ++i) {
+    const auto& b = sc.solids[i];
+    const std::string label = "[[solid]] #" + std::to_string(i) + " ";
+    if (b.moves() && eulerian)
+      val.fail_entry(
+          root, "solid", i, b.displacement.empty() ? "displacement_table" : "displacement",
+          label + "moves, but method isph with description = \"eulerian\" keeps every particle in place");
+    if (one_wall_layer(sc) && b.layers != 1) val.fail_entry(root, "solid", i, "layers", label + one_layer);
+  }
+  // Particles that move would carry a fixed pressure away.
+  for (std::size_t i = 0; i < sc.fixed_pressure.size() && !eulerian; ++i)
+    val.fail_entry(root, "fixed_pressure", i, "min",
+                   "[[fixed_pressure]] #" + std::to_string(i) +
+                       " needs [method] name = \"isph\" with description = \"eulerian\" (fixed particles)");
+}
+
+}  // namespace
+
+MethodSpec isph_spec() {
+  MethodSpec spec;
+  spec.doc =
+      "incompressible SPH: corrected ALE-ISPH with one layer of Neumann walls, density-based shifting and "
+      "I-SPH(2) free surfaces (pressure equation solved as set in [solver]; docs/isph.md)";
+  spec.keys = isph_keys();
+  spec.owns = {"fixed_pressure"};
+  // The ISPH paper's cubic spline with h = 1.2 d.
+  spec.hooks.kernel = [](int) { return std::string("cubic_spline"); };
+  spec.hooks.smoothing_ratio = [](const Scene&) { return 1.2; };
+  spec.hooks.jacobi_weight = 2.0 / 3.0;
+  spec.hooks.shifting = "density";
+  spec.hooks.solves_pressure = true;
+  spec.hooks.step_motion = 3.0;
+  spec.hooks.resolve = resolve;
+  spec.hooks.wall_layers = wall_layers;
+  spec.hooks.validate = validate;
+  return spec;
+}
+
+}  // namespace ryushi

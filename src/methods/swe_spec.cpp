@@ -1,0 +1,47 @@
+// The shallow-water method's scene rules (scene/registered_keys.hpp): registered with the
+// method in swe.cpp. Its parameters are in its own sections ([swe], [bed], [splitting]).
+#include "methods/swe_spec.hpp"
+
+#include "scene/scene.hpp"
+#include "scene/validator.hpp"
+
+namespace ryushi {
+
+namespace {
+
+// A plan view on the lattice, the spiky kernel of eq. 8 and the water's weight along -z.
+void resolve(Scene& sc, const toml::table& root, Validator& val) {
+  if (sc.disorder > 0)
+    val.fail(root["particles"]["disorder"].node(), "particles.disorder",
+             "method 'swe' places its particles on the lattice; disorder is for wcsph, mps and isph");
+  if (sc.dimension != 2)
+    val.fail(root["scene"]["dimension"].node(), "scene.dimension",
+             "method 'swe' is 2D (a plan view: x and y horizontal); set dimension = 2");
+  if (sc.kernel != "spiky")
+    val.fail(root["particles"]["kernel"].node(), "particles.kernel",
+             "method 'swe' uses the spiky kernel (eq. 8): leave kernel out");
+  if (root["particles"]["smoothing_ratio"])
+    val.fail(root["particles"]["smoothing_ratio"].node(), "particles.smoothing_ratio",
+             "method 'swe' sets r_e from the particle areas: use [swe] influence_ratio");
+  if (root["physics"]["gravity"])
+    val.fail(root["physics"]["gravity"].node(), "physics.gravity",
+             "method 'swe' has no in-plane gravity: set [swe] gravity (along -z) and the bed's slope in "
+             "[[bed_ramp]] or [bed]");
+}
+
+}  // namespace
+
+MethodSpec swe_spec() {
+  MethodSpec spec;
+  spec.doc =
+      "shallow-water MPS in the plan view with dynamic particle splitting (Saigo & Koshizuka; [swe], [bed], "
+      "[splitting]; docs/swe.md)";
+  spec.owns = {"swe", "bed", "bed_hump", "bed_ramp", "splitting"};
+  spec.hooks.kernel = [](int) { return std::string("spiky"); };
+  spec.hooks.smoothing_ratio = [](const Scene& sc) { return sc.swe.influence_ratio; };
+  spec.hooks.cfl = 0.5;
+  spec.hooks.resolve = resolve;
+  return spec;
+}
+
+}  // namespace ryushi

@@ -1,0 +1,102 @@
+#include "scene/registered_keys.hpp"
+
+#include <map>
+#include <stdexcept>
+
+#include "scene/scene.hpp"
+
+namespace ryushi {
+
+namespace {
+// Function-local so registration from any translation unit's static initialiser is safe.
+std::map<std::string, MethodSpec>& specs() {
+  static std::map<std::string, MethodSpec> r;
+  return r;
+}
+std::map<std::string, SystemKeys>& systems() {
+  static std::map<std::string, SystemKeys> r;
+  return r;
+}
+unsigned long& generation() {
+  static unsigned long g = 0;
+  return g;
+}
+}  // namespace
+
+unsigned long registered_keys_generation() {
+  return generation();
+}
+
+bool register_method_spec(const std::string& name, MethodSpec spec) {
+  if (!specs().emplace(name, std::move(spec)).second)
+    throw std::logic_error("method '" + name + "' registered twice");
+  ++generation();
+  return true;
+}
+
+void unregister_method_spec(const std::string& name) {
+  specs().erase(name);
+  ++generation();
+}
+
+bool register_system_keys(const std::string& name, SystemKeys keys) {
+  if (!systems().emplace(name, std::move(keys)).second)
+    throw std::logic_error("system '" + name + "' registered twice");
+  ++generation();
+  return true;
+}
+
+void unregister_system_keys(const std::string& name) {
+  systems().erase(name);
+  ++generation();
+}
+
+std::vector<std::string> system_key_names() {
+  std::vector<std::string> names;
+  for (auto& [n, _] : systems()) names.push_back(n);
+  return names;
+}
+
+const SystemKeys* find_system_keys(const std::string& name) {
+  auto it = systems().find(name);
+  return it == systems().end() ? nullptr : &it->second;
+}
+
+std::vector<std::string> method_spec_names() {
+  std::vector<std::string> names;
+  for (auto& [n, _] : specs()) names.push_back(n);
+  return names;
+}
+
+const MethodSpec* find_method_spec(const std::string& name) {
+  auto it = specs().find(name);
+  return it == specs().end() ? nullptr : &it->second;
+}
+
+std::vector<std::string> methods_owning_key(const std::string& key) {
+  std::vector<std::string> owners;
+  for (auto& [name, spec] : specs())
+    if (find_key(spec.keys, key)) owners.push_back(name);
+  return owners;
+}
+
+const toml::node& MethodParams::at(const std::string& key) const {
+  const toml::node* node = values_.get(key);
+  // The loader inserted every key the method declares; asking for another is a coding error.
+  if (!node) throw std::logic_error("[method] has no key '" + key + "'");
+  return *node;
+}
+double MethodParams::number(const std::string& key) const {
+  return *at(key).value<double>();
+}
+long long MethodParams::integer(const std::string& key) const {
+  return *at(key).value<long long>();
+}
+bool MethodParams::flag(const std::string& key) const {
+  return *at(key).value<bool>();
+}
+std::string MethodParams::text(const std::string& key) const {
+  return *at(key).value<std::string>();
+}
+
+}  // namespace ryushi

@@ -1,0 +1,101 @@
+#pragma once
+// What the scene loader needs to know of the registered methods and systems, registered next to
+// their code (RYUSHI_REGISTER_METHOD, RYUSHI_REGISTER_SYSTEM in src/methods/): a method's [method]
+// keys and the hooks that give the scene's defaults and checks that depend on the method; a
+// system's [[systems]] keys. The loader holds no method's name and no method's rule: it asks this
+// registry. The scene layer owns it (methods, built on top of the scene, fill it), so the loader
+// includes nothing above it.
+#include <toml++/toml.h>
+
+#include <functional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "scene/schema.hpp"
+
+namespace ryushi {
+
+struct Scene;
+class Validator;
+
+// A method's validated [method] table: every key of the method, defaults inserted, and the
+// set of keys the scene gave (a default that depends on the scene asks whether its key was given).
+class MethodParams {
+ public:
+  MethodParams() = default;
+  MethodParams(toml::table values, std::set<std::string> given)
+      : values_(std::move(values)), given_(std::move(given)) {}
+  double number(const std::string& key) const;
+  long long integer(const std::string& key) const;
+  bool flag(const std::string& key) const;
+  std::string text(const std::string& key) const;
+  bool has(const std::string& key) const { return values_.contains(key); }  // a value, given or default
+  bool given(const std::string& key) const { return given_.count(key) != 0; }
+  // A default that depends on the scene (a method's resolve hook): the key keeps `value`.
+  template <class T>
+  void set(const std::string& key, T value) {
+    values_.insert_or_assign(key, std::move(value));
+  }
+  const toml::table& table() const { return values_; }
+
+ private:
+  const toml::node& at(const std::string& key) const;
+  toml::table values_;
+  std::set<std::string> given_;
+};
+
+// The scene's defaults and checks that depend on its method. Each is optional.
+struct MethodHooks {
+  // [particles] kernel and smoothing_ratio when the scene leaves them out (by dimension).
+  std::function<std::string(int dimension)> kernel;
+  std::function<double(const Scene&)> smoothing_ratio;
+  double cfl = 0.2;               // [time] cfl when left out
+  double jacobi_weight = 1.0;     // [solver] jacobi_weight when left out
+  std::string shifting = "none";  // [shifting] model when left out
+  bool solves_pressure = false;   // reads [solver] (its pressure equation)
+  bool multiphysics = false;      // models [material] rheology, activation_energy and conductivity
+  // The most a particle moves in one step, in cfl spacings: the neighbour search's radius grows
+  // by it (a periodic axis must hold three such radii).
+  double step_motion = 0;
+  // After the scene's plain sections are read and before its geometry: defaults that depend on
+  // the scene (which may set keys of the method's table) and the checks of the method's keys
+  // against the rest of the scene. The root is the parsed file with --set applied, for the
+  // places of errors.
+  std::function<void(Scene&, const toml::table& root, Validator&)> resolve;
+  // The default `layers` of [[wall]] and [[solid]] (0: enough to cover the kernel support).
+  std::function<int(const Scene&)> wall_layers;
+  // After the whole scene is read: the checks across sections (geometry, probes) of the method.
+  std::function<void(const Scene&, const toml::table& root, Validator&)> validate;
+};
+
+struct MethodSpec {
+  std::string doc;            // one line for docs/scenes.md
+  std::vector<KeySpec> keys;  // its [method] keys besides name
+  // Sections ("swe") and keys of other sections ("time.step_rule") only this method reads: a
+  // scene of another method that writes one is an error there.
+  std::vector<std::string> owns;
+  MethodHooks hooks;
+};
+
+// Throws std::logic_error for a name registered twice.
+bool register_method_spec(const std::string& name, MethodSpec spec);
+void unregister_method_spec(const std::string& name);  // a plugin that failed to load
+std::vector<std::string> method_spec_names();          // sorted
+const MethodSpec* find_method_spec(const std::string& name);
+// The methods (sorted) that declare `key` among their [method] keys.
+std::vector<std::string> methods_owning_key(const std::string& key);
+
+// A registered system's [[systems]] keys (besides name) and its line for docs/scenes.md.
+struct SystemKeys {
+  std::string doc;
+  std::vector<KeySpec> keys;
+};
+bool register_system_keys(const std::string& name, SystemKeys keys);  // throws for a name taken
+void unregister_system_keys(const std::string& name);
+std::vector<std::string> system_key_names();  // sorted
+const SystemKeys* find_system_keys(const std::string& name);
+// Changes whenever a method or system is registered or removed (the schema's docs follow it).
+unsigned long registered_keys_generation();
+
+}  // namespace ryushi
