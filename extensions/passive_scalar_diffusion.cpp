@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 
+#include "ecs/io.hpp"
 #include "ecs/lattice.hpp"
 #include "methods/system_registry.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
@@ -37,13 +38,12 @@ class PassiveScalarDiffusion final : public System<D> {
   std::string name() const override { return "passive_scalar_diffusion"; }
 
   // The declaration is the contract: the scheduler orders this system after whatever writes
-  // density or positions, and SystemContext refuses any column not listed here.
-  Access access() const override {
-    return Access{}
-        .read(components::position, components::density, components::mass, components::kind,
-              neighbours_resource, resources::dt)
-        .write(scalar);
-  }
+  // density or positions, and run() fetches exactly this list (SystemContext refuses anything
+  // else).
+  static constexpr auto io = Io{reads(components::position, components::density, components::mass,
+                                      components::kind, neighbours_resource, resources::dt),
+                                writes(scalar)};
+  Access access() const override { return io.access(); }
 
   // Initial condition: a Gaussian bump phi = amplitude exp(-|x - centre|^2 / (2 width^2)).
   void initialise(World<D>& world, Resources&) override {
@@ -54,13 +54,7 @@ class PassiveScalarDiffusion final : public System<D> {
   }
 
   void run(SystemContext<D>& ctx) override {
-    auto x = ctx.read(components::position);
-    auto rho = ctx.read(components::density);
-    auto m = ctx.read(components::mass);
-    auto kind = ctx.read(components::kind);
-    auto& nl = ctx.read(neighbours_resource);
-    const double dt = ctx.read(resources::dt);
-    auto phi = ctx.write(scalar);
+    auto [x, rho, m, kind, nl, dt, phi] = io.fetch(ctx);
     rate_.assign(phi.size(), 0.0);
     const double h = context_.kernel.h(), eta2 = 0.01 * h * h;
     // Gather the rates first, then update: every particle sees the old phi of its neighbours.

@@ -16,6 +16,9 @@ struct Access {
   std::set<std::string> reads;
   std::set<std::string> writes;
   std::map<std::string, ColumnType> columns;  // component columns to allocate, by name
+  // Names among reads and writes declared only to order the system against others (an edge
+  // of the flow graph): the system never fetches them (io.hpp, order_only).
+  std::set<std::string> ordering;
 
   template <class... Items>
   Access& read(const Items&... items) {

@@ -28,6 +28,7 @@ class Scheduler {
       names_.push_back(s->name());
       slots_.push_back(profiler_.slot(names_.back()));
     }
+    fetched_.resize(pipeline_.size());
     allocate_columns();
     build_graph();
   }
@@ -59,6 +60,9 @@ class Scheduler {
   const std::vector<std::pair<std::size_t, std::size_t>>& edges() const { return edges_; }
   const std::vector<SystemPtr<D>>& pipeline() const { return pipeline_; }
   const std::vector<Access>& accesses() const { return accesses_; }
+  // The names each system fetched, over every step run so far (against accesses(): a declared
+  // name no run fetched is a stale declaration).
+  const std::vector<FetchedNames>& fetched() const { return fetched_; }
 
   // The last system in the pipeline that writes a name (for naming the culprit of a failure).
   std::string last_writer(const std::string& name) const {
@@ -107,7 +111,8 @@ class Scheduler {
     if (failed_) return;  // a failed step skips the rest
     auto begin = Profiler::Clock::now();
     try {
-      SystemContext<D> ctx(world_, res_, accesses_[i], names_[i]);
+      // Each system's set is written only by its own node, which never runs twice at once.
+      SystemContext<D> ctx(world_, res_, accesses_[i], names_[i], &fetched_[i]);
       pipeline_[i]->run(ctx);
     } catch (const AccessViolation&) {
       fail(std::current_exception());
@@ -133,6 +138,7 @@ class Scheduler {
   std::vector<Access> accesses_;
   std::vector<std::string> names_;
   std::vector<std::size_t> slots_;
+  std::vector<FetchedNames> fetched_;
   tbb::flow::graph graph_;
   tbb::flow::broadcast_node<tbb::flow::continue_msg> start_;
   std::vector<std::unique_ptr<tbb::flow::continue_node<tbb::flow::continue_msg>>> nodes_;

@@ -2,8 +2,11 @@
 // A system: a named piece of work over the world with a declared access set. Systems obtain
 // their columns and resources through SystemContext using the same tokens they declare, and
 // any access outside the declaration throws AccessViolation (per system run, not per particle,
-// so the check stays on in every build type).
+// so the check stays on in every build type). The context also records what was fetched, so a
+// declaration the system never uses is found too (tests/access_declaration_test.cpp).
+#include <functional>
 #include <memory>
+#include <set>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -20,11 +23,16 @@ class AccessViolation : public std::logic_error {
   using std::logic_error::logic_error;
 };
 
+// Names fetched through a context; std::less<> finds a name without building a string.
+using FetchedNames = std::set<std::string, std::less<>>;
+
 template <int D>
 class SystemContext {
  public:
-  SystemContext(World<D>& world, Resources& res, const Access& access, std::string_view system)
-      : world_(world), res_(res), access_(access), system_(system) {}
+  // fetched: where to record the names fetched (null: not recorded).
+  SystemContext(World<D>& world, Resources& res, const Access& access, std::string_view system,
+                FetchedNames* fetched = nullptr)
+      : world_(world), res_(res), access_(access), system_(system), fetched_(fetched) {}
 
   std::size_t size() const { return world_.size(); }
   std::uint64_t structure_version() const { return world_.structure_version(); }
@@ -32,26 +40,34 @@ class SystemContext {
   template <class Kind>
   std::span<const element_t<Kind, D>> read(Component<Kind> c) const {
     if (!access_.may_read(std::string(c.name))) violation("reads", "component", c.name);
+    record(c.name);
     return world_.column(c);
   }
   template <class Kind>
   std::span<element_t<Kind, D>> write(Component<Kind> c) const {
     if (!access_.may_write(std::string(c.name))) violation("writes", "component", c.name);
+    record(c.name);
     return world_.column(c);
   }
   template <class T>
   const T& read(Resource<T> r) const {
     if (!access_.may_read(std::string(r.name))) violation("reads", "resource", r.name);
+    record(r.name);
     return res_.get(r);
   }
   template <class T>
   T& write(Resource<T> r) const {
     if (!access_.may_write(std::string(r.name))) violation("writes", "resource", r.name);
+    record(r.name);
     return res_.get(r);
   }
   std::string_view system_name() const { return system_; }
 
  private:
+  // Once per fetch, which is once per system run: not on any particle's path.
+  void record(std::string_view name) const {
+    if (fetched_ && fetched_->find(name) == fetched_->end()) fetched_->emplace(name);
+  }
   [[noreturn]] void violation(const char* verb, const char* what, std::string_view name) const {
     throw AccessViolation("system '" + std::string(system_) + "' " + verb + " " + what + " '" +
                           std::string(name) + "' without declaring it");
@@ -60,6 +76,7 @@ class SystemContext {
   Resources& res_;
   const Access& access_;
   std::string_view system_;
+  FetchedNames* fetched_;
 };
 
 template <int D>

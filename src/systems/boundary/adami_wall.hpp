@@ -7,7 +7,7 @@
 // 2 v_wall - v~ for no-slip, v_wall being the wall particle's own velocity: zero for containers,
 // a [[solid]]'s prescribed velocity for a lid, a sliding plate or a moving body. The particles of
 // [[elastic]] bodies get the same rows: to the fluid they are walls that move.
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
@@ -19,25 +19,15 @@ class AdamiWall final : public System<D> {
  public:
   explicit AdamiWall(const WcsphParameters<D>& p) : p_(p) {}
   std::string name() const override { return "wall_boundary_adami"; }
-  Access access() const override {
-    Access a;
-    a.read(components::position, components::velocity, components::kind, neighbours_resource)
-        .write(components::pressure, components::density);
-    if (p_.viscous()) a.write(components::wall_velocity);
-    if (p_.wall_acceleration) a.read(components::body_acceleration);
-    return a;
+  auto io() const {
+    return Io{reads(components::position, components::velocity, components::kind, neighbours_resource),
+              writes(components::pressure, components::density),
+              optional(p_.viscous(), writes(components::wall_velocity)),
+              optional(p_.wall_acceleration, reads(components::body_acceleration))};
   }
+  Access access() const override { return io().access(); }
   void run(SystemContext<D>& ctx) override {
-    auto x = ctx.read(components::position);
-    auto v = ctx.read(components::velocity);
-    auto kind = ctx.read(components::kind);
-    auto& nl = ctx.read(neighbours_resource);
-    auto p = ctx.write(components::pressure);
-    auto rho = ctx.write(components::density);
-    std::span<Vec<D>> ghost;
-    if (p_.viscous()) ghost = ctx.write(components::wall_velocity);
-    std::span<const Vec<D>> acceleration;
-    if (p_.wall_acceleration) acceleration = ctx.read(components::body_acceleration);
+    auto [x, v, kind, nl, p, rho, ghost, acceleration] = io().fetch(ctx);
     const bool periodic = p_.domain.any_periodic();
     // felt(w): the acceleration the fluid's weight presses the wall with, g - a_w.
     auto condition = [&](std::size_t w, auto&& felt) {

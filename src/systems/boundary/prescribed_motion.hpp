@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "scene/expression.hpp"
 #include "scene/motion_table.hpp"
 
@@ -25,19 +25,14 @@ class PrescribedMotion final : public System<D> {
   };
   explicit PrescribedMotion(std::vector<Body> bodies) : bodies_(std::move(bodies)) {}
   std::string name() const override { return "prescribed_motion"; }
-  Access access() const override {
-    Access a;
-    a.read(components::kind, components::body, components::body_origin, resources::time)
-        .write(components::position, components::velocity, components::body_acceleration);
-    return a;
-  }
+  // The body column says which particles move (kind is not needed, and no system writes it).
+  static constexpr auto io =
+      Io{reads(components::body, components::body_origin, resources::time),
+         writes(components::position, components::velocity, components::body_acceleration)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    auto body = ctx.read(components::body);
-    auto origin = ctx.read(components::body_origin);
-    auto x = ctx.write(components::position);
-    auto v = ctx.write(components::velocity);
-    auto acceleration = ctx.write(components::body_acceleration);
-    const double t = ctx.read(resources::time), h = 1e-6, ha = 2e-4;
+    auto [body, origin, t, x, v, acceleration] = io.fetch(ctx);
+    const double h = 1e-6, ha = 2e-4;
     for (std::size_t i = 0; i < body.size(); ++i) {
       if (body[i] < 0) continue;
       for (auto& b : bodies_) {

@@ -30,9 +30,9 @@
 #include <cmath>
 #include <memory>
 
-#include "ecs/system.hpp"
-#include "systems/elastic/elastic_parameters.hpp"
+#include "ecs/io.hpp"
 #include "systems/elastic/elastic_model.hpp"
+#include "systems/elastic/elastic_parameters.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/neighbour/domain.hpp"
 
@@ -44,11 +44,14 @@ class ElasticSubsteps final : public System<D> {
   ElasticSubsteps(std::shared_ptr<ElasticModel<D>> model, const ElasticParameters<D>& p)
       : model_(std::move(model)), p_(p) {}
   std::string name() const override { return "elastic_substeps"; }
+  // The integration's own list; the model's (evaluate, advance) joins it.
+  static constexpr auto io =
+      Io{reads(components::kind, components::clamped, components::acceleration, resources::dt,
+               domain_resource<D>),
+         writes(components::position, components::velocity, elastic_substeps_resource)};
   Access access() const override {
-    Access a;
+    Access a = io.access();
     model_->declare(a);
-    a.read(resources::dt, domain_resource<D>)
-        .write(components::position, components::velocity, elastic_substeps_resource);
     return a;
   }
   void initialise(World<D>& world, Resources& res) override {
@@ -56,18 +59,12 @@ class ElasticSubsteps final : public System<D> {
     res.ensure(elastic_substeps_resource) = 1;
   }
   void run(SystemContext<D>& ctx) override {
-    const double dt = ctx.read(resources::dt);
+    auto [kind, clamped, a, dt, domain, x, v, substeps] = io.fetch(ctx);
     int m = 1;
     if (p_.max_substeps > 1 && p_.substep_limit > 0)
       m = std::clamp(static_cast<int>(std::ceil(dt / p_.substep_limit - 1e-9)), 1, p_.max_substeps);
-    ctx.write(elastic_substeps_resource) = m;
+    substeps = m;
     const double h = dt / m;
-    const auto& domain = ctx.read(domain_resource<D>);
-    auto kind = ctx.read(components::kind);
-    auto clamped = ctx.read(components::clamped);
-    auto a = ctx.read(components::acceleration);
-    auto x = ctx.write(components::position);
-    auto v = ctx.write(components::velocity);
     auto kick = [&] {
       for_each_of_kind(kind, kElastic, [&](std::size_t i) {
         if (!clamped[i]) v[i] += 0.5 * h * a[i];
@@ -124,26 +121,17 @@ class ElasticCorrector final : public System<D> {
  public:
   explicit ElasticCorrector(bool fluid) : fluid_(fluid) {}
   std::string name() const override { return "elastic_kick"; }
-  Access access() const override {
-    Access a;
-    a.read(components::acceleration, components::kind, components::clamped, components::rest_position,
-           resources::dt, elastic_substeps_resource, domain_resource<D>)
-        .write(components::velocity, components::displacement, components::position);
-    if (fluid_) a.read(components::fluid_force);
-    return a;
+  auto io() const {
+    return Io{reads(components::acceleration, components::kind, components::clamped,
+                    components::rest_position, resources::dt, elastic_substeps_resource, domain_resource<D>),
+              writes(components::velocity, components::displacement, components::position),
+              optional(fluid_, reads(components::fluid_force))};
   }
+  Access access() const override { return io().access(); }
   void run(SystemContext<D>& ctx) override {
-    const double dt = ctx.read(resources::dt), h = dt / ctx.read(elastic_substeps_resource);
-    const auto& domain = ctx.read(domain_resource<D>);
-    auto a = ctx.read(components::acceleration);
-    auto clamped = ctx.read(components::clamped);
-    auto rest = ctx.read(components::rest_position);
-    auto x = ctx.write(components::position);
-    auto v = ctx.write(components::velocity);
-    auto u = ctx.write(components::displacement);
-    std::span<const Vec<D>> f;
-    if (fluid_) f = ctx.read(components::fluid_force);
-    for_each_of_kind(ctx.read(components::kind), kElastic, [&](std::size_t i) {
+    auto [a, kind, clamped, rest, dt, substeps, domain, v, u, x, f] = io().fetch(ctx);
+    const double h = dt / substeps;
+    for_each_of_kind(kind, kElastic, [&](std::size_t i) {
       if (!clamped[i]) v[i] += 0.5 * h * a[i] + (f.empty() ? Vec<D>::Zero() : Vec<D>(dt * f[i]));
       u[i] = domain.displacement(x[i], rest[i]);
     });

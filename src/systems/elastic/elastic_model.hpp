@@ -8,7 +8,7 @@
 // bodies.
 #include <cmath>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/elastic/elastic_parameters.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
@@ -19,7 +19,8 @@ template <int D>
 class ElasticModel {
  public:
   virtual ~ElasticModel() = default;
-  // Everything evaluate() and advance() read and write.
+  // Everything evaluate() and advance() read and write: the model's Io (ecs/io.hpp), which they
+  // fetch, added to the systems' own.
   virtual void declare(Access& a) const = 0;
   virtual void initialise(World<D>& world) = 0;
   // The accelerations (and the model's rates, stress, density, strain energy for output) at the

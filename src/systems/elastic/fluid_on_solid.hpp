@@ -8,7 +8,7 @@
 // is the force on i, and j receives -sum_i F_ij, divided here by its solid mass rho0_s d^D.
 #include <cmath>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/elastic/elastic_parameters.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
@@ -21,28 +21,18 @@ class FluidOnSolid final : public System<D> {
  public:
   FluidOnSolid(const WcsphParameters<D>& fluid, double volume) : p_(fluid), volume_(volume) {}
   std::string name() const override { return "fluid_on_solid"; }
-  Access access() const override {
-    Access a;
-    a.read(components::position, components::velocity, components::density, components::pressure,
-           components::mass, components::kind, components::solid_rest_density, neighbours_resource)
-        .write(components::fluid_force);
-    if (p_.viscous()) a.read(components::viscosity, components::wall_velocity);
-    return a;
+  // The viscous force on the solid is the no-slip wall's only (slip walls feel none).
+  bool viscous() const { return p_.viscous() && p_.wall_no_slip; }
+  auto io() const {
+    return Io{reads(components::position, components::velocity, components::density, components::pressure,
+                    components::mass, components::kind, components::solid_rest_density, neighbours_resource),
+              writes(components::fluid_force),
+              optional(viscous(), reads(components::viscosity, components::wall_velocity))};
   }
+  Access access() const override { return io().access(); }
   void run(SystemContext<D>& ctx) override {
-    auto x = ctx.read(components::position);
-    auto v = ctx.read(components::velocity);
-    auto rho = ctx.read(components::density);
-    auto p = ctx.read(components::pressure);
-    auto m = ctx.read(components::mass);
-    auto kind = ctx.read(components::kind);
-    auto rho0 = ctx.read(components::solid_rest_density);
-    const auto& nl = ctx.read(neighbours_resource);
-    std::span<const double> mu;
-    std::span<const Vec<D>> ghost;
-    const bool viscous = p_.viscous() && p_.wall_no_slip;
-    if (p_.viscous()) mu = ctx.read(components::viscosity), ghost = ctx.read(components::wall_velocity);
-    auto out = ctx.write(components::fluid_force);
+    auto [x, v, rho, p, m, kind, rho0, nl, out, mu, ghost] = io().fetch(ctx);
+    const bool viscous = this->viscous();
     const double support2 = p_.kernel.support() * p_.kernel.support(),
                  eta2 = 0.01 * p_.kernel.h() * p_.kernel.h();
     for_each_of_kind(kind, kElastic, [&](std::size_t j) {

@@ -27,10 +27,10 @@
 #include <map>
 #include <vector>
 
+#include "ecs/io.hpp"
 #include "ecs/lattice.hpp"
 #include "ecs/outer_sum.hpp"
 #include "systems/elastic/elastic_model.hpp"
-#include "ecs/system.hpp"
 #include "systems/elastic/elastic_parameters.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
@@ -41,14 +41,16 @@ template <int D>
 class TotalLagrangianElasticity final : public ElasticModel<D> {
  public:
   explicit TotalLagrangianElasticity(const ElasticParameters<D>& p) : p_(p) {}
-  void declare(Access& a) const override {
-    a.read(components::position, components::velocity, components::kind, components::id,
-           components::rest_position, components::solid_rest_density, components::bulk_modulus,
-           components::shear_modulus, components::clamped, components::elastic_body)
-        .write(components::acceleration, components::stress, components::solid_density,
-               components::solid_pressure, components::strain_energy);
-    if (p_.contacts) a.read(neighbours_resource);
+  // The rest positions enter through initialise() (outside the flow graph) only.
+  auto io() const {
+    return Io{reads(components::position, components::velocity, components::kind, components::id,
+                    components::solid_rest_density, components::bulk_modulus, components::shear_modulus,
+                    components::clamped, components::elastic_body),
+              writes(components::acceleration, components::stress, components::solid_density,
+                     components::solid_pressure, components::strain_energy),
+              optional(p_.contacts, reads(neighbours_resource))};
   }
+  void declare(Access& a) const override { io().declare(a); }
   // The rest configuration: each elastic particle's neighbours within the support among the
   // particles of its own body (by id, so reordering cannot change them) and its B.
   void initialise(World<D>& world) override {
@@ -113,21 +115,8 @@ class TotalLagrangianElasticity final : public ElasticModel<D> {
     version_ = ~std::uint64_t(0);
   }
   void evaluate(SystemContext<D>& ctx) override {
-    auto x = ctx.read(components::position);
-    auto v = ctx.read(components::velocity);
-    auto kind = ctx.read(components::kind);
-    auto id = ctx.read(components::id);
-    auto rho0 = ctx.read(components::solid_rest_density);
-    auto K = ctx.read(components::bulk_modulus);
-    auto G = ctx.read(components::shear_modulus);
-    auto clamped = ctx.read(components::clamped);
-    auto body = ctx.read(components::elastic_body);
-    const NeighbourList* nl = p_.contacts ? &ctx.read(neighbours_resource) : nullptr;
-    auto a = ctx.write(components::acceleration);
-    auto sigma = ctx.write(components::stress);
-    auto rho = ctx.write(components::solid_density);
-    auto pressure = ctx.write(components::solid_pressure);
-    auto energy = ctx.write(components::strain_energy);
+    // nl: null without contacts.
+    auto [x, v, kind, id, rho0, K, G, clamped, body, a, sigma, rho, pressure, energy, nl] = io().fetch(ctx);
     const std::size_t n = ids_.size();
     if (ctx.structure_version() != version_) {  // particles reordered or removed: find them by id
       index_.assign(n, 0);

@@ -48,30 +48,19 @@ template <int D>
 class UpdatedLagrangianElasticity final : public ElasticModel<D> {
  public:
   explicit UpdatedLagrangianElasticity(const ElasticParameters<D>& p) : p_(p) {}
-  void declare(Access& a) const override {
-    a.read(components::position, components::velocity, components::kind, components::solid_rest_density,
-           components::bulk_modulus, components::shear_modulus, components::clamped, components::elastic_body,
-           neighbours_resource)
-        .write(components::acceleration, components::stress, components::solid_density,
-               components::solid_pressure, components::strain_energy, components::deviatoric_stress);
-  }
+  // evaluate() and advance() both take the whole list (advance uses part of it).
+  static constexpr auto io =
+      Io{reads(components::position, components::velocity, components::kind, components::solid_rest_density,
+               components::bulk_modulus, components::shear_modulus, components::clamped,
+               components::elastic_body, neighbours_resource),
+         writes(components::acceleration, components::stress, components::solid_density,
+                components::solid_pressure, components::strain_energy, components::deviatoric_stress)};
+  void declare(Access& a) const override { io.declare(a); }
   void initialise(World<D>& world) override { world.ensure(components::deviatoric_stress); }
   void evaluate(SystemContext<D>& ctx) override {
-    auto x = ctx.read(components::position);
-    auto v = ctx.read(components::velocity);
-    auto kind = ctx.read(components::kind);
-    auto rho0 = ctx.read(components::solid_rest_density);
-    auto K = ctx.read(components::bulk_modulus);
-    auto G = ctx.read(components::shear_modulus);
-    auto clamped = ctx.read(components::clamped);
-    auto body = ctx.read(components::elastic_body);
-    const auto& nl = ctx.read(neighbours_resource);
-    auto a = ctx.write(components::acceleration);
-    auto sigma = ctx.write(components::stress);
-    auto rho = ctx.write(components::solid_density);
-    auto pressure = ctx.write(components::solid_pressure);
-    auto energy = ctx.write(components::strain_energy);
-    auto s = ctx.read(components::deviatoric_stress);
+    auto [x, v, kind, rho0, K, G, clamped, body, nl, a, sigma, rho, pressure, energy, s_state] =
+        io.fetch(ctx);
+    const std::span<const Mat<D>> s = s_state;  // read here; advance() writes it
     const std::size_t N = x.size();
     const double volume = p_.volume(), eps = p_.artificial_stress;
     const double w_d = p_.kernel.w(p_.spacing);
@@ -133,15 +122,7 @@ class UpdatedLagrangianElasticity final : public ElasticModel<D> {
   // Verlet (rates taken before the kick, an explicit Euler step, made the plate's pressure noise
   // grow from the first period).
   void advance(SystemContext<D>& ctx, double h) override {
-    auto x = ctx.read(components::position);
-    auto v = ctx.read(components::velocity);
-    auto kind = ctx.read(components::kind);
-    auto rho0 = ctx.read(components::solid_rest_density);
-    auto G = ctx.read(components::shear_modulus);
-    auto body = ctx.read(components::elastic_body);
-    const auto& nl = ctx.read(neighbours_resource);
-    auto s = ctx.write(components::deviatoric_stress);
-    auto rho = ctx.write(components::solid_density);
+    auto [x, v, kind, rho0, K, G, clamped, body, nl, a, sigma, rho, pressure, energy, s] = io.fetch(ctx);
     const std::size_t N = x.size();
     const double volume = p_.volume();
     ds_.resize(N);

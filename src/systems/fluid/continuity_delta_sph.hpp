@@ -7,7 +7,7 @@
 // conserving. (The seed prints a difference; with x_ij = x_i - x_j the sum is what follows
 // from Marrone et al. 2011.) Diffusion acts between fluid particles only; walls enter the
 // divergence term with their own (prescribed) velocity.
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
@@ -19,24 +19,14 @@ class ContinuityDeltaSph final : public System<D> {
  public:
   explicit ContinuityDeltaSph(const WcsphParameters<D>& p) : p_(p) {}
   std::string name() const override { return p_.delta > 0 ? "continuity_delta_sph" : "continuity"; }
-  Access access() const override {
-    Access a;
-    a.read(components::position, components::velocity, components::density, components::mass,
-           components::kind, neighbours_resource)
-        .write(components::density_rate);
-    if (p_.delta > 0) a.read(components::density_gradient);
-    return a;
+  auto io() const {
+    return Io{reads(components::position, components::velocity, components::density, components::mass,
+                    components::kind, neighbours_resource),
+              writes(components::density_rate), optional(p_.delta > 0, reads(components::density_gradient))};
   }
+  Access access() const override { return io().access(); }
   void run(SystemContext<D>& ctx) override {
-    auto x = ctx.read(components::position);
-    auto v = ctx.read(components::velocity);
-    auto rho = ctx.read(components::density);
-    auto m = ctx.read(components::mass);
-    auto kind = ctx.read(components::kind);
-    auto& nl = ctx.read(neighbours_resource);
-    std::span<const Vec<D>> grad;
-    if (p_.delta > 0) grad = ctx.read(components::density_gradient);
-    auto drho = ctx.write(components::density_rate);
+    auto [x, v, rho, m, kind, nl, drho, grad] = io().fetch(ctx);
     const bool periodic = p_.domain.any_periodic();
     const double diffusion = p_.delta * p_.kernel.h() * p_.c0;
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {

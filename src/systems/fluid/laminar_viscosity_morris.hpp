@@ -4,7 +4,7 @@
 // Per-particle dynamic viscosity lives in the `viscosity` column, which exists only when the
 // scene has a viscous material. Walls use the Adami ghost velocity (no-slip) or are skipped
 // (free-slip) and take the fluid particle's viscosity.
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
@@ -16,27 +16,17 @@ class LaminarViscosityMorris final : public System<D> {
  public:
   explicit LaminarViscosityMorris(const WcsphParameters<D>& p) : p_(p) {}
   std::string name() const override { return "laminar_viscosity_morris"; }
-  Access access() const override {
-    return Access{}
-        .read(components::position, components::velocity, components::wall_velocity,
-              components::density, components::mass, components::viscosity, components::kind,
-              neighbours_resource)
-        .write(components::acceleration);
-  }
+  static constexpr auto io =
+      Io{reads(components::position, components::velocity, components::wall_velocity, components::density,
+               components::mass, components::viscosity, components::kind, neighbours_resource),
+         writes(components::acceleration)};
+  Access access() const override { return io.access(); }
   void initialise(World<D>& world, Resources&) override {
     auto& mu = world.ensure(components::viscosity);
     std::fill(mu.begin(), mu.end(), p_.mu);
   }
   void run(SystemContext<D>& ctx) override {
-    auto x = ctx.read(components::position);
-    auto v = ctx.read(components::velocity);
-    auto vw = ctx.read(components::wall_velocity);
-    auto rho = ctx.read(components::density);
-    auto m = ctx.read(components::mass);
-    auto mu = ctx.read(components::viscosity);
-    auto kind = ctx.read(components::kind);
-    auto& nl = ctx.read(neighbours_resource);
-    auto a = ctx.write(components::acceleration);
+    auto [x, v, vw, rho, m, mu, kind, nl, a] = io.fetch(ctx);
     const bool periodic = p_.domain.any_periodic();
     const double eta2 = 0.01 * p_.kernel.h() * p_.kernel.h();
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {

@@ -5,7 +5,7 @@
 //   Pi_ij = (-alpha c0 mu_ij + beta mu_ij^2) / rho_ij,  mu_ij = h v_ij.x_ij / (r^2 + 0.01 h^2)
 // for approaching pairs (v_ij.x_ij < 0), zero otherwise. Walls contribute their Adami pressure
 // and their own (zero) velocity.
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
@@ -17,21 +17,13 @@ class Momentum final : public System<D> {
  public:
   explicit Momentum(const WcsphParameters<D>& p) : p_(p) {}
   std::string name() const override { return "momentum_pressure_artificial_viscosity"; }
-  Access access() const override {
-    return Access{}
-        .read(components::position, components::velocity, components::density,
-              components::pressure, components::mass, components::kind, neighbours_resource)
-        .write(components::acceleration);
-  }
+  static constexpr auto io =
+      Io{reads(components::position, components::velocity, components::density, components::pressure,
+               components::mass, components::kind, neighbours_resource),
+         writes(components::acceleration)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    auto x = ctx.read(components::position);
-    auto v = ctx.read(components::velocity);
-    auto rho = ctx.read(components::density);
-    auto p = ctx.read(components::pressure);
-    auto m = ctx.read(components::mass);
-    auto kind = ctx.read(components::kind);
-    auto& nl = ctx.read(neighbours_resource);
-    auto a = ctx.write(components::acceleration);
+    auto [x, v, rho, p, m, kind, nl, a] = io.fetch(ctx);
     const bool periodic = p_.domain.any_periodic();
     const double h = p_.kernel.h(), eta2 = 0.01 * h * h;
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {

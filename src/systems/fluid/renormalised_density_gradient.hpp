@@ -4,7 +4,7 @@
 // the operator library (systems/operators/gradient.hpp) applied to the density with volumes
 // V_j = m_j / rho_j, including its documented fallback to the uncorrected gradient where L_i is
 // ill-conditioned (a splash).
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
 #include "systems/operators/gradient.hpp"
@@ -16,21 +16,15 @@ class RenormalisedDensityGradient final : public System<D> {
  public:
   explicit RenormalisedDensityGradient(const WcsphParameters<D>& p) : p_(p) {}
   std::string name() const override { return "density_gradient_renormalised"; }
-  Access access() const override {
-    return Access{}
-        .read(components::position, components::density, components::mass, components::kind,
-              neighbours_resource)
-        .write(components::density_gradient);
-  }
+  static constexpr auto io = Io{reads(components::position, components::density, components::mass,
+                                      components::kind, neighbours_resource),
+                                writes(components::density_gradient)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    auto rho = ctx.read(components::density);
-    auto m = ctx.read(components::mass);
+    auto [x, rho, m, kind, nl, grad] = io.fetch(ctx);
     particle_volumes(m, rho, volume_);
-    ParticleView<D> view{ctx.read(components::position), volume_, ctx.read(neighbours_resource), p_.kernel,
-                         p_.domain};
-    auto grad = ctx.write(components::density_gradient);
-    for_each_of_kind(ctx.read(components::kind), kFluid,
-                     [&](std::size_t i) { grad[i] = gradient_corrected(view, rho, i); });
+    ParticleView<D> view{x, volume_, nl, p_.kernel, p_.domain};
+    for_each_of_kind(kind, kFluid, [&](std::size_t i) { grad[i] = gradient_corrected(view, rho, i); });
   }
 
  private:

@@ -1,6 +1,6 @@
 #pragma once
 // Tait equation of state p = B((rho/rho0)^gamma - 1) for fluid particles (seed 002 eq. 3).
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
 
@@ -11,13 +11,11 @@ class TaitEquationOfState final : public System<D> {
  public:
   explicit TaitEquationOfState(const WcsphParameters<D>& p) : p_(p) {}
   std::string name() const override { return "equation_of_state"; }
-  Access access() const override {
-    return Access{}.read(components::density, components::kind).write(components::pressure);
-  }
+  static constexpr auto io = Io{reads(components::density, components::kind), writes(components::pressure)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    auto rho = ctx.read(components::density);
-    auto p = ctx.write(components::pressure);
-    for_each_of_kind(ctx.read(components::kind), kFluid, [&](std::size_t i) { p[i] = p_.pressure(rho[i]); });
+    auto [rho, kind, p] = io.fetch(ctx);
+    for_each_of_kind(kind, kFluid, [&](std::size_t i) { p[i] = p_.pressure(rho[i]); });
   }
 
  private:

@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/fluid/pairs_once.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
@@ -28,44 +28,26 @@ class WcsphPairForces final : public System<D> {
  public:
   explicit WcsphPairForces(const WcsphParameters<D>& p) : p_(p) {}
   std::string name() const override { return "wcsph_pair_forces"; }
-  Access access() const override {
-    Access a;
-    a.read(components::position, components::velocity, components::density, components::pressure,
-           components::mass, components::kind, neighbours_resource)
-        .write(components::density_rate, components::acceleration);
-    if (p_.delta > 0) a.read(components::density_gradient);
-    if (p_.viscous()) a.read(components::viscosity, components::wall_velocity);
-    return a;
+  auto io() const {
+    return Io{reads(components::position, components::velocity, components::density, components::pressure,
+                    components::mass, components::kind, neighbours_resource),
+              writes(components::density_rate, components::acceleration),
+              optional(p_.delta > 0, reads(components::density_gradient)),
+              optional(p_.viscous(), reads(components::viscosity, components::wall_velocity))};
   }
+  Access access() const override { return io().access(); }
   void initialise(World<D>& world, Resources&) override {
     if (!p_.viscous() || p_.variable_viscosity) return;  // a rheology model writes it each stage
     auto& mu = world.ensure(components::viscosity);
     std::fill(mu.begin(), mu.end(), p_.mu);
   }
   void run(SystemContext<D>& ctx) override {
-    Columns c{ctx.read(components::position),
-              ctx.read(components::velocity),
-              ctx.read(components::density),
-              ctx.read(components::pressure),
-              ctx.read(components::mass),
-              ctx.read(components::kind),
-              {},
-              {},
-              {},
-              {},
-              {},
-              ctx.write(components::density_rate),
-              ctx.write(components::acceleration)};
-    if (p_.delta > 0) c.grad = ctx.read(components::density_gradient);
-    if (p_.viscous()) {
-      c.mu = ctx.read(components::viscosity);
-      c.vw = ctx.read(components::wall_velocity);
-    }
+    auto [x, v, rho, p, m, kind, nl, drho, a, grad, mu, vw] = io().fetch(ctx);
+    Columns c{x, v, rho, p, m, kind, grad, mu, vw, {}, {}, drho, a};
     particle_volumes(c.m, c.rho, volume_);
     inverse_densities(c.rho, inv_rho_);
     c.V = volume_;
     c.inv_rho = inv_rho_;
-    const auto& nl = ctx.read(neighbours_resource);
     // The branches that are fixed for a run become template arguments, out of the pair loop.
     const bool periodic = p_.domain.any_periodic(), diffusion = p_.delta > 0, viscous = p_.viscous();
     const std::size_t block = pairs_once_block_size(nl, pairs_once_);

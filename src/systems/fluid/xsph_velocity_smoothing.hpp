@@ -7,7 +7,7 @@
 // the particles and carries to the next step (`velocity_start`).
 #include <vector>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/kernels/kernel.hpp"
 #include "systems/neighbour/domain.hpp"
@@ -24,19 +24,15 @@ class XsphVelocitySmoothing final : public System<D> {
         epsilon_(epsilon),
         column_(half_step ? components::velocity_start : components::velocity) {}
   std::string name() const override { return "xsph_velocity_smoothing"; }
-  Access access() const override {
-    return Access{}
-        .read(components::position, components::density, components::mass, components::kind,
-              neighbours_resource)
-        .write(column_);
+  // The smoothed column is the integrator's (fixed at construction).
+  auto io() const {
+    return Io{reads(components::position, components::density, components::mass, components::kind,
+                    neighbours_resource),
+              writes(column_)};
   }
+  Access access() const override { return io().access(); }
   void run(SystemContext<D>& ctx) override {
-    auto x = ctx.read(components::position);
-    auto rho = ctx.read(components::density);
-    auto m = ctx.read(components::mass);
-    auto kind = ctx.read(components::kind);
-    const auto& nl = ctx.read(neighbours_resource);
-    auto v = ctx.write(column_);
+    auto [x, rho, m, kind, nl, v] = io().fetch(ctx);
     before_.assign(v.begin(), v.end());  // each particle reads its neighbours' unsmoothed velocity
     const double support2 = kernel_.support() * kernel_.support();
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {

@@ -4,6 +4,7 @@
 //   rule = "isph2"        # marrone | isph2 | mps
 // and get the per-particle columns `free_surface` (1 on the surface) and `surface_normal`;
 // with `moment_matrix = true` also the tensor `moment_matrix` (M_i, the inverse of L_i).
+#include "ecs/io.hpp"
 #include "methods/system_registry.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/free_surface/free_surface_detection.hpp"
@@ -22,30 +23,24 @@ class FreeSurfaceDetection final : public System<D> {
     if (rule_ == FreeSurfaceRule::Mps) n0_ = mps_reference<D>(context_.kernel, context_.spacing).n0;
   }
   std::string name() const override { return "free_surface_detection"; }
-  Access access() const override {
-    auto a = Access{}
-                 .read(components::position, components::mass, components::density, components::kind, neighbours_resource)
-                 .write(components::free_surface, components::surface_normal);
-    if (write_moments_) a.write(moment_matrix_component);
-    return a;
+  auto io() const {
+    return Io{reads(components::position, components::mass, components::density, components::kind,
+                    neighbours_resource),
+              writes(components::free_surface, components::surface_normal),
+              optional(write_moments_, writes(moment_matrix_component))};
   }
+  Access access() const override { return io().access(); }
   void run(SystemContext<D>& ctx) override {
-    auto m = ctx.read(components::mass);
-    auto rho = ctx.read(components::density);
+    auto [x, m, rho, kind, nl, flag, normal, moments] = io().fetch(ctx);
     particle_volumes(m, rho, volume_);
-    ParticleView<D> view{ctx.read(components::position), volume_, ctx.read(neighbours_resource), context_.kernel,
-                         context_.domain};
-    auto flag = ctx.write(components::free_surface);
-    auto normal = ctx.write(components::surface_normal);
-    for_each_of_kind(ctx.read(components::kind), kFluid, [&](std::size_t i) {
+    ParticleView<D> view{x, volume_, nl, context_.kernel, context_.domain};
+    for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       auto r = detect_free_surface(view, i, rule_, p_, n0_);
       flag[i] = r.surface;
       normal[i] = r.normal;
     });
-    if (write_moments_) {
-      auto moments = ctx.write(moment_matrix_component);
-      for_each_of_kind(ctx.read(components::kind), kFluid, [&](std::size_t i) { moments[i] = moment_matrix(view, i); });
-    }
+    if (write_moments_)
+      for_each_of_kind(kind, kFluid, [&](std::size_t i) { moments[i] = moment_matrix(view, i); });
   }
 
  private:

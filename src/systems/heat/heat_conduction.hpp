@@ -19,7 +19,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/heat/heat_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
@@ -31,33 +31,17 @@ class HeatConduction final : public System<D> {
  public:
   explicit HeatConduction(const HeatParameters<D>& p) : p_(p) {}
   std::string name() const override { return "heat_conduction_cleary_monaghan"; }
-  Access access() const override {
-    Access a;
-    a.read(components::position, components::density, components::mass, components::kind,
-           components::temperature, neighbours_resource)
-        .write(components::temperature_rate);
-    if (p_.walls) a.read(components::thermal_wall);
-    if (p_.flux_walls) a.read(components::wall_heat_flux);
-    if (p_.wall_geometry()) a.read(components::wall_normal, components::wall_depth);
-    return a;
+  auto io() const {
+    return Io{reads(components::position, components::density, components::mass, components::kind,
+                    components::temperature, neighbours_resource),
+              writes(components::temperature_rate), optional(p_.walls, reads(components::thermal_wall)),
+              optional(p_.flux_walls, reads(components::wall_heat_flux)),
+              optional(p_.wall_geometry(), reads(components::wall_normal, components::wall_depth))};
   }
+  Access access() const override { return io().access(); }
   void run(SystemContext<D>& ctx) override {
-    auto x = ctx.read(components::position);
-    auto rho = ctx.read(components::density);
-    auto m = ctx.read(components::mass);
-    auto kind = ctx.read(components::kind);
-    auto T = ctx.read(components::temperature);
-    const auto& nl = ctx.read(neighbours_resource);
-    auto rate = ctx.write(components::temperature_rate);
-    std::span<const std::int32_t> thermal;
-    if (p_.walls) thermal = ctx.read(components::thermal_wall);
-    std::span<const double> flux, depth;
-    std::span<const Vec<D>> normal;
-    if (p_.flux_walls) flux = ctx.read(components::wall_heat_flux);
-    if (p_.wall_geometry()) {
-      normal = ctx.read(components::wall_normal);
-      depth = ctx.read(components::wall_depth);
-    }
+    // Empty spans for the wall columns the scene has not got.
+    auto [x, rho, m, kind, T, nl, rate, thermal, flux, normal, depth] = io().fetch(ctx);
     const double nearest = 0.5 * p_.spacing;
     const double support2 = p_.kernel.support() * p_.kernel.support();
     const double eta2 = 0.01 * p_.kernel.h() * p_.kernel.h();

@@ -10,7 +10,7 @@
 // kick is the textbook dt a^n; with a varying one it is the average of the two half steps around
 // t^n, which keeps the scheme second order. Position and velocity of wall particles are the
 // walls' own (not integrated).
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/heat/heat_parameters.hpp"
 #include "systems/neighbour/domain.hpp"
@@ -22,36 +22,21 @@ class LeapfrogIntegrator final : public System<D> {
  public:
   explicit LeapfrogIntegrator(bool heat) : heat_(heat) {}
   std::string name() const override { return "integrate_leapfrog"; }
-  Access access() const override {
-    Access a;
-    a.read(components::acceleration, components::density_rate, components::kind, resources::dt,
-           domain_resource<D>)
-        .write(components::position, components::velocity, components::density, components::velocity_start,
-               components::density_start);
-    if (heat_)
-      a.read(components::temperature_rate).write(components::temperature, components::temperature_start);
-    return a;
+  auto io() const {
+    return Io{reads(components::acceleration, components::density_rate, components::kind, resources::dt,
+                    domain_resource<D>),
+              writes(components::position, components::velocity, components::density,
+                     components::velocity_start, components::density_start),
+              optional(heat_, reads(components::temperature_rate),
+                       writes(components::temperature, components::temperature_start))};
   }
+  Access access() const override { return io().access(); }
   void run(SystemContext<D>& ctx) override {
-    const double dt = ctx.read(resources::dt);
+    // Without heat the temperature spans are empty.
+    auto [a, drho, kind, dt, domain, x, v, rho, v_half, rho_half, dT, T, T_half] = io().fetch(ctx);
     const double kick = 0.5 * ((started_ ? previous_dt_ : 0.0) + dt);
-    const auto& domain = ctx.read(domain_resource<D>);
     const bool periodic = domain.any_periodic(), first = !started_;
-    auto a = ctx.read(components::acceleration);
-    auto drho = ctx.read(components::density_rate);
-    auto x = ctx.write(components::position);
-    auto v = ctx.write(components::velocity);
-    auto rho = ctx.write(components::density);
-    auto v_half = ctx.write(components::velocity_start);
-    auto rho_half = ctx.write(components::density_start);
-    std::span<const double> dT;
-    std::span<double> T, T_half;
-    if (heat_) {
-      dT = ctx.read(components::temperature_rate);
-      T = ctx.write(components::temperature);
-      T_half = ctx.write(components::temperature_start);
-    }
-    for_each_of_kind(ctx.read(components::kind), kFluid, [&](std::size_t i) {
+    for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       // The previous half step's values; at the first step the initial ones (eq. 15).
       Vec<D> vh = (first ? v[i] : v_half[i]) + kick * a[i];
       const double rh = (first ? rho[i] : rho_half[i]) + kick * drho[i];

@@ -3,7 +3,7 @@
 // fluid particles:
 //   phi^{n+1/2} = phi^n + dt/2 F(phi^n)        (MidpointPredictor, keeps phi^n)
 //   phi^{n+1}   = phi^n + dt   F(phi^{n+1/2})  (MidpointCorrector)
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/neighbour/domain.hpp"
 
@@ -13,23 +13,15 @@ template <int D>
 class MidpointPredictor final : public System<D> {
  public:
   std::string name() const override { return "integrate_predictor"; }
-  Access access() const override {
-    return Access{}
-        .read(components::acceleration, components::density_rate, components::kind, resources::dt)
-        .write(components::position, components::velocity, components::density,
-               components::position_start, components::velocity_start, components::density_start);
-  }
+  static constexpr auto io =
+      Io{reads(components::acceleration, components::density_rate, components::kind, resources::dt),
+         writes(components::position, components::velocity, components::density, components::position_start,
+                components::velocity_start, components::density_start)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    const double half = 0.5 * ctx.read(resources::dt);
-    auto a = ctx.read(components::acceleration);
-    auto drho = ctx.read(components::density_rate);
-    auto x = ctx.write(components::position);
-    auto v = ctx.write(components::velocity);
-    auto rho = ctx.write(components::density);
-    auto x0 = ctx.write(components::position_start);
-    auto v0 = ctx.write(components::velocity_start);
-    auto rho0 = ctx.write(components::density_start);
-    for_each_of_kind(ctx.read(components::kind), kFluid, [&](std::size_t i) {
+    auto [a, drho, kind, dt, x, v, rho, x0, v0, rho0] = io.fetch(ctx);
+    const double half = 0.5 * dt;
+    for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       x0[i] = x[i];
       v0[i] = v[i];
       rho0[i] = rho[i];
@@ -44,26 +36,15 @@ template <int D>
 class MidpointCorrector final : public System<D> {
  public:
   std::string name() const override { return "integrate_corrector"; }
-  Access access() const override {
-    return Access{}
-        .read(components::acceleration, components::density_rate, components::kind,
-              components::position_start, components::velocity_start, components::density_start,
-              resources::dt, domain_resource<D>)
-        .write(components::position, components::velocity, components::density);
-  }
+  static constexpr auto io = Io{
+      reads(components::acceleration, components::density_rate, components::kind, components::position_start,
+            components::velocity_start, components::density_start, resources::dt, domain_resource<D>),
+      writes(components::position, components::velocity, components::density)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    const double dt = ctx.read(resources::dt);
-    const auto& domain = ctx.read(domain_resource<D>);
+    auto [a, drho, kind, x0, v0, rho0, dt, domain, x, v, rho] = io.fetch(ctx);
     const bool periodic = domain.any_periodic();
-    auto a = ctx.read(components::acceleration);
-    auto drho = ctx.read(components::density_rate);
-    auto x0 = ctx.read(components::position_start);
-    auto v0 = ctx.read(components::velocity_start);
-    auto rho0 = ctx.read(components::density_start);
-    auto x = ctx.write(components::position);
-    auto v = ctx.write(components::velocity);
-    auto rho = ctx.write(components::density);
-    for_each_of_kind(ctx.read(components::kind), kFluid, [&](std::size_t i) {
+    for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       x[i] = x0[i] + dt * v[i];  // v is v^{n+1/2} here
       v[i] = v0[i] + dt * a[i];
       rho[i] = rho0[i] + dt * drho[i];

@@ -18,7 +18,7 @@
 
 #include <algorithm>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
 
 namespace ryushi {
@@ -36,16 +36,13 @@ class TimeStepControl final : public System<D> {
         seed001_(seed001_rule),
         diffusion_scale_(diffusion_scale) {}
   std::string name() const override { return "time_step_control"; }
-  Access access() const override {
-    Access a;
-    a.read(components::velocity, components::acceleration, components::kind).write(resources::dt);
-    if (p_.variable_viscosity) a.read(components::viscosity);
-    return a;
+  auto io() const {
+    return Io{reads(components::velocity, components::acceleration, components::kind), writes(resources::dt),
+              optional(p_.variable_viscosity, reads(components::viscosity))};
   }
+  Access access() const override { return io().access(); }
   void run(SystemContext<D>& ctx) override {
-    auto v = ctx.read(components::velocity);
-    auto a = ctx.read(components::acceleration);
-    auto kind = ctx.read(components::kind);
+    auto [v, a, kind, dt, column] = io().fetch(ctx);
     using Pair = std::pair<double, double>;  // max |v|^2, max |a|^2
     Pair m = tbb::parallel_reduce(
         tbb::blocked_range<std::size_t>(0, v.size(), 4096), Pair{0, 0},
@@ -60,7 +57,6 @@ class TimeStepControl final : public System<D> {
         [](Pair x, Pair y) { return Pair{std::max(x.first, y.first), std::max(x.second, y.second)}; });
     double mu = p_.mu;
     if (p_.variable_viscosity) {
-      auto column = ctx.read(components::viscosity);
       mu = tbb::parallel_reduce(
           tbb::blocked_range<std::size_t>(0, column.size(), 4096), 0.0,
           [&](auto r, double acc) {
@@ -70,7 +66,7 @@ class TimeStepControl final : public System<D> {
           },
           [](double x, double y) { return std::max(x, y); });
     }
-    ctx.write(resources::dt) = limit(std::sqrt(m.first), std::sqrt(m.second), mu);
+    dt = limit(std::sqrt(m.first), std::sqrt(m.second), mu);
   }
   // mu: the largest dynamic viscosity present (negative: the scene's, p.mu).
   double limit(double vmax, double amax, double mu = -1) const {

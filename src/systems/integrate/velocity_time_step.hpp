@@ -9,7 +9,7 @@
 // skins rely on (MpsParameters / IsphParameters::search_radius).
 #include <algorithm>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 
 namespace ryushi {
@@ -21,13 +21,11 @@ class VelocityTimeStep final : public System<D> {
   VelocityTimeStep(double cfl, double spacing, double reference_speed, double viscous_limit)
       : cfl_(cfl), spacing_(spacing), reference_speed_(reference_speed), viscous_limit_(viscous_limit) {}
   std::string name() const override { return "time_step_control"; }
-  Access access() const override {
-    return Access{}.read(components::velocity, components::kind).write(resources::dt);
-  }
+  static constexpr auto io = Io{reads(components::velocity, components::kind), writes(resources::dt)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    auto v = ctx.read(components::velocity);
-    auto kind = ctx.read(components::kind);
-    ctx.write(resources::dt) = limit(max_fluid_speed<D>(kind, v));
+    auto [v, kind, dt] = io.fetch(ctx);
+    dt = limit(max_fluid_speed<D>(kind, v));
   }
   double limit(double vmax) const {
     double dt = cfl_ * spacing_ / std::max(vmax, reference_speed_);

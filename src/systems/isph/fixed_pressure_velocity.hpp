@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/isph/isph_parameters.hpp"
 
 namespace ryushi {
@@ -27,11 +27,9 @@ class FixedPressureVelocity final : public System<D> {
  public:
   explicit FixedPressureVelocity(const Domain<D>& domain) : domain_(domain) {}
   std::string name() const override { return "fixed_pressure_velocity"; }
-  Access access() const override {
-    return Access{}
-        .read(components::id, components::velocity_source)
-        .write(components::velocity);
-  }
+  static constexpr auto io =
+      Io{reads(components::id, components::velocity_source), writes(components::velocity)};
+  Access access() const override { return io.access(); }
   void initialise(World<D>& world, Resources&) override {
     auto& source = world.ensure(components::velocity_source);
     auto& x = world.column(components::position);
@@ -50,9 +48,7 @@ class FixedPressureVelocity final : public System<D> {
     }
   }
   void run(SystemContext<D>& ctx) override {
-    auto id = ctx.read(components::id);
-    auto source = ctx.read(components::velocity_source);
-    auto v = ctx.write(components::velocity);
+    auto [id, source, v] = io.fetch(ctx);
     // The pairs (buffer particle, source) as indices, rebuilt only when the particles were
     // reordered since the last step (Eulerian particles stay; ISPH does not reorder them).
     bool valid = !pairs_.empty();

@@ -12,7 +12,7 @@
 #include <span>
 #include <vector>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/isph/isph_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
@@ -26,21 +26,13 @@ class IsphPredictor final : public System<D> {
  public:
   explicit IsphPredictor(const IsphParameters<D>& p) : p_(p) {}
   std::string name() const override { return "isph_predictor"; }
-  Access access() const override {
-    return Access{}
-        .read(components::kind, components::mass, components::density, neighbours_resource, resources::dt,
-              domain_resource<D>)
-        .write(components::position, components::velocity, components::acceleration);
-  }
+  // The domain is the parameters' copy (p_.domain): no system writes the resource.
+  static constexpr auto io =
+      Io{reads(components::kind, components::mass, components::density, neighbours_resource, resources::dt),
+         writes(components::position, components::velocity, components::acceleration)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    const double dt = ctx.read(resources::dt);
-    const auto& nl = ctx.read(neighbours_resource);
-    auto kind = ctx.read(components::kind);
-    auto m = ctx.read(components::mass);
-    auto rho = ctx.read(components::density);
-    auto x = ctx.write(components::position);
-    auto v = ctx.write(components::velocity);
-    auto a = ctx.write(components::acceleration);
+    auto [kind, m, rho, nl, dt, x, v, a] = io.fetch(ctx);
     particle_volumes(m, rho, volume_);
     ParticleView<D> view{std::span<const Vec<D>>(x.data(), x.size()), volume_, nl, p_.kernel, p_.domain};
     const bool eulerian = p_.description == IsphDescription::Eulerian;

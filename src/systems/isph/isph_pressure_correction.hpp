@@ -23,7 +23,7 @@
 // kept in `pressure_gradient` (an output field).
 #include <vector>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/free_surface/free_surface_detection.hpp"
 #include "systems/isph/isph_parameters.hpp"
@@ -38,26 +38,16 @@ class IsphPressureCorrection final : public System<D> {
  public:
   explicit IsphPressureCorrection(const IsphParameters<D>& p) : p_(p) {}
   std::string name() const override { return "isph_pressure_correction"; }
-  Access access() const override {
-    return Access{}
-        .read(components::pressure, components::kind, components::mass, components::density,
-              components::wall_normal, components::free_surface, pressure_neighbours_resource, resources::dt)
-        .write(components::position, components::velocity, components::pressure_gradient);
-  }
+  static constexpr auto io = Io{
+      reads(components::pressure, components::kind, components::mass, components::density,
+            components::wall_normal, components::free_surface, pressure_neighbours_resource, resources::dt),
+      writes(components::position, components::velocity, components::pressure_gradient)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    const double dt = ctx.read(resources::dt);
-    const auto& nl = ctx.read(pressure_neighbours_resource);  // without dry walls
-    auto p = ctx.read(components::pressure);
-    auto kind = ctx.read(components::kind);
-    auto m = ctx.read(components::mass);
-    auto rho = ctx.read(components::density);
-    auto x = ctx.write(components::position);
-    auto v = ctx.write(components::velocity);
-    auto grad = ctx.write(components::pressure_gradient);
+    // nl: the pressure rows' neighbours, without dry walls.
+    auto [p, kind, m, rho, normal, surface, nl, dt, x, v, grad] = io.fetch(ctx);
     particle_volumes(m, rho, volume_);
     ParticleView<D> view{std::span<const Vec<D>>(x.data(), x.size()), volume_, nl, p_.kernel, p_.domain};
-    auto normal = ctx.read(components::wall_normal);
-    auto surface = ctx.read(components::free_surface);
     auto surface_in_support = [&](std::size_t i) {
       if (surface[i]) return true;
       for (auto j : nl.of(i))

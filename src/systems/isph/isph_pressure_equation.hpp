@@ -33,7 +33,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/free_surface/free_surface_detection.hpp"
 #include "systems/isph/compression_density.hpp"
@@ -52,16 +52,16 @@ class IsphPressureEquation final : public System<D> {
   explicit IsphPressureEquation(const IsphParameters<D>& p)
       : p_(p), compression_error_(p.kernel, p.spacing, p.compression_density, p.wall_adami) {}
   std::string name() const override { return "ppe_assembly"; }
-  Access access() const override {
-    Access a;
-    a.read(components::position, components::velocity, components::mass, components::density, components::kind,
-           components::id, components::free_surface, components::surface_normal, components::wall_normal,
-           neighbours_resource, resources::dt)
-        .write(pressure_system_resource, pressure_neighbours_resource);
-    if (p_.fixed_pressure) a.read(components::fixed_pressure);
-    if (p_.wall_adami && p_.wall_acceleration) a.read(components::body_acceleration);
-    return a;
+  // id: to name a particle whose row is bad.
+  auto io() const {
+    return Io{reads(components::position, components::velocity, components::mass, components::density,
+                    components::kind, components::id, components::free_surface, components::surface_normal,
+                    components::wall_normal, neighbours_resource, resources::dt),
+              writes(pressure_system_resource, pressure_neighbours_resource),
+              optional(p_.fixed_pressure, reads(components::fixed_pressure)),
+              optional(p_.wall_adami && p_.wall_acceleration, reads(components::body_acceleration))};
   }
+  Access access() const override { return io().access(); }
   void initialise(World<D>&, Resources& res) override {
     res.ensure(pressure_system_resource);
     res.ensure(pressure_neighbours_resource);
@@ -70,27 +70,15 @@ class IsphPressureEquation final : public System<D> {
   void run(SystemContext<D>& ctx) override {
     // The step's own dt: the velocity-divergence source changes in proportion to the step (the
     // gravity and the motion it integrates), unlike MPS's relaxed density error.
-    const double dt = ctx.read(resources::dt);
-    const auto& full = ctx.read(neighbours_resource);
-    auto x = ctx.read(components::position);
-    auto v = ctx.read(components::velocity);
-    auto m = ctx.read(components::mass);
-    auto rho = ctx.read(components::density);
-    auto kind = ctx.read(components::kind);
-    auto surface = ctx.read(components::free_surface);
-    auto normal = ctx.read(components::wall_normal);
-    auto& sys = ctx.write(pressure_system_resource);
+    // fixed: Dirichlet values other than 0 (a neighbour without a row moves coefficient * value
+    // to b); acceleration: a moving body's, for Adami's rows. Empty where the scene has none.
+    auto [x, v, m, rho, kind, id, surface, surface_normal, normal, full, dt, sys, pressure_neighbours, fixed,
+          acceleration] = io().fetch(ctx);
     const std::size_t n = x.size();
     particle_volumes(m, rho, volume_);
     ParticleView<D> full_view{x, volume_, full, p_.kernel, p_.domain};
     const double h = p_.kernel.h(), support = p_.kernel.support(), d = p_.spacing;
     const double shell = 1.1 * std::sqrt(double(D)) * d;
-    auto surface_normal = ctx.read(components::surface_normal);
-    // Dirichlet values other than 0: a neighbour without a row moves coefficient * value to b.
-    std::span<const double> fixed;
-    if (p_.fixed_pressure) fixed = ctx.read(components::fixed_pressure);
-    std::span<const Vec<D>> acceleration;  // a moving body's, for Adami's rows
-    if (p_.wall_adami && p_.wall_acceleration) acceleration = ctx.read(components::body_acceleration);
     auto known = [&](std::size_t j) { return fixed.empty() || !std::isfinite(fixed[j]) ? 0.0 : fixed[j]; };
 
     // Which particles carry an unknown: interior fluid, surface fluid whose pressure is
@@ -132,7 +120,7 @@ class IsphPressureEquation final : public System<D> {
         }
       }
     });
-    const auto& nl = restrict_to_wetted(kind, full, ctx.write(pressure_neighbours_resource));
+    const auto& nl = restrict_to_wetted(kind, full, pressure_neighbours);
     ParticleView<D> view{x, volume_, nl, p_.kernel, p_.domain};
     // v* seen at wall particles: the Shepard interpolation of their fluid neighbours' v*, used in
     // the Neumann rows and in the fluid rows' divergence. With the wall's own (zero) velocity
@@ -356,7 +344,7 @@ class IsphPressureEquation final : public System<D> {
       for (auto seen = bad_row_found.load(); bad_row < seen && !bad_row_found.compare_exchange_weak(seen, bad_row);) {
       }
     });
-    if (bad_row_found != kNoRow) report_bad_row(ctx, sys.particle_of_row[bad_row_found], x);
+    if (bad_row_found != kNoRow) report_bad_row(kind, id, sys.particle_of_row[bad_row_found], x);
     if (keep_weights && !kept) kept_builds_ = full.builds, kept_rows_ = sys.particle_of_row;
     // Pass 2: compact into CSR.
     auto& A = sys.A;
@@ -414,10 +402,10 @@ class IsphPressureEquation final : public System<D> {
     return out;
   }
 
-  [[noreturn]] void report_bad_row(SystemContext<D>& ctx, std::size_t i, std::span<const Vec<D>> x) const {
+  [[noreturn]] void report_bad_row(std::span<const std::int32_t> kind, std::span<const std::int32_t> id,
+                                   std::size_t i, std::span<const Vec<D>> x) const {
     std::ostringstream m;
-    m << (ctx.read(components::kind)[i] == kFluid ? "fluid" : "wall") << " particle id "
-      << ctx.read(components::id)[i] << " at (";
+    m << (kind[i] == kFluid ? "fluid" : "wall") << " particle id " << id[i] << " at (";
     for (int a = 0; a < D; ++a) m << (a ? ", " : "") << x[i][a];
     m << ") has a pressure row without a finite diagonal or right-hand side (a particle on top of another, or a "
          "non-finite velocity)";

@@ -10,7 +10,7 @@
 // never touched. Counts its interventions (`wall_guard_events`, in summary.json).
 #include <atomic>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/isph/isph_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
@@ -26,18 +26,13 @@ class IsphWallGuard final : public System<D> {
  public:
   IsphWallGuard(const Domain<D>& domain, double min_distance) : domain_(domain), min_distance_(min_distance) {}
   std::string name() const override { return "wall_guard"; }
-  Access access() const override {
-    return Access{}
-        .read(components::kind, components::wall_normal, neighbours_resource)
-        .write(components::position, components::velocity, resources::wall_guard_events);
-  }
+  static constexpr auto io =
+      Io{reads(components::kind, components::wall_normal, neighbours_resource),
+         writes(components::position, components::velocity, resources::wall_guard_events)};
+  Access access() const override { return io.access(); }
   void initialise(World<D>&, Resources& res) override { res.ensure(resources::wall_guard_events); }
   void run(SystemContext<D>& ctx) override {
-    const auto& nl = ctx.read(neighbours_resource);
-    auto kind = ctx.read(components::kind);
-    auto normal = ctx.read(components::wall_normal);
-    auto x = ctx.write(components::position);
-    auto v = ctx.write(components::velocity);
+    auto [kind, normal, nl, x, v, total] = io.fetch(ctx);
     std::atomic<std::size_t> events{0};
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       double nearest = std::numeric_limits<double>::max();
@@ -59,7 +54,7 @@ class IsphWallGuard final : public System<D> {
       if (double towards = (v[i] - v[wall]).dot(n); towards > 0) v[i] -= towards * n;
       events.fetch_add(1, std::memory_order_relaxed);
     });
-    ctx.write(resources::wall_guard_events) += events.load();
+    total += events.load();
   }
 
  private:

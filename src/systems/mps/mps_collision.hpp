@@ -10,7 +10,7 @@
 // 0.5 l0 distance never fires there; at 0.8 l0 an approaching particle is turned back before it
 // is 0.62 l0 from the wall plane, and a fluid particle at rest (l0 from the wall) is untouched. Every
 // particle gathers from the velocities before the collision (no order dependence) and writes only itself.
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/mps/mps_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
@@ -26,18 +26,12 @@ class MpsCollision final : public System<D> {
         wall_distance_(wall_distance * p.spacing),
         restitution_(restitution) {}
   std::string name() const override { return "mps_collision"; }
-  Access access() const override {
-    return Access{}
-        .read(components::kind, neighbours_resource, resources::dt, domain_resource<D>)
-        .write(components::position, components::velocity);
-  }
+  static constexpr auto io =
+      Io{reads(components::kind, neighbours_resource, resources::dt, domain_resource<D>),
+         writes(components::position, components::velocity)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    const double dt = ctx.read(resources::dt);
-    const auto& nl = ctx.read(neighbours_resource);
-    const auto& domain = ctx.read(domain_resource<D>);
-    auto kind = ctx.read(components::kind);
-    auto x = ctx.write(components::position);
-    auto v = ctx.write(components::velocity);
+    auto [kind, nl, dt, domain, x, v] = io.fetch(ctx);
     dv_.resize(x.size());
     auto& dv = dv_;
     const double fluid2 = distance_ * distance_, wall2 = wall_distance_ * wall_distance_;

@@ -5,7 +5,7 @@
 // with the MPS Laplacian (eq. 7) over fluid and wall neighbours (walls at rest: no-slip).
 #include <vector>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/mps/mps_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
@@ -17,19 +17,12 @@ class MpsExplicitForces final : public System<D> {
  public:
   explicit MpsExplicitForces(const MpsParameters<D>& p) : p_(p) {}
   std::string name() const override { return "mps_explicit_forces"; }
-  Access access() const override {
-    return Access{}
-        .read(components::kind, neighbours_resource, resources::dt, domain_resource<D>)
-        .write(components::position, components::velocity, components::acceleration);
-  }
+  static constexpr auto io =
+      Io{reads(components::kind, neighbours_resource, resources::dt, domain_resource<D>),
+         writes(components::position, components::velocity, components::acceleration)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    const double dt = ctx.read(resources::dt);
-    const auto& nl = ctx.read(neighbours_resource);
-    const auto& domain = ctx.read(domain_resource<D>);
-    auto kind = ctx.read(components::kind);
-    auto x = ctx.write(components::position);
-    auto v = ctx.write(components::velocity);
-    auto a = ctx.write(components::acceleration);
+    auto [kind, nl, dt, domain, x, v, a] = io.fetch(ctx);
     const double viscous = p_.nu * p_.laplacian_coefficient();
     // Gather every acceleration from u^k first, then move: a particle never reads a neighbour's
     // already-updated velocity.

@@ -14,7 +14,7 @@
 // same positions (mps_pair_weights.hpp). The narrowed list is row for row the one
 // filter_neighbour_list gives, and the weights and sums are the ones computed before, bit for
 // bit.
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/mps/mps_pair_weights.hpp"
 #include "systems/mps/mps_parameters.hpp"
@@ -28,22 +28,13 @@ class MpsNumberDensity final : public System<D> {
  public:
   explicit MpsNumberDensity(const MpsParameters<D>& p) : p_(p) {}
   std::string name() const override { return "mps_number_density"; }
-  Access access() const override {
-    return Access{}
-        .read(components::position, components::kind, domain_resource<D>)
-        .write(neighbours_resource, components::number_density, components::density,
-               components::pressure_role, mps_pair_weights_resource);
-  }
+  static constexpr auto io = Io{reads(components::position, components::kind, domain_resource<D>),
+                                writes(neighbours_resource, components::number_density, components::density,
+                                       components::pressure_role, mps_pair_weights_resource)};
+  Access access() const override { return io.access(); }
   void initialise(World<D>&, Resources& res) override { res.ensure(mps_pair_weights_resource); }
   void run(SystemContext<D>& ctx) override {
-    auto& list = ctx.write(neighbours_resource);
-    const auto& domain = ctx.read(domain_resource<D>);
-    auto x = ctx.read(components::position);
-    auto kind = ctx.read(components::kind);
-    auto n = ctx.write(components::number_density);
-    auto rho = ctx.write(components::density);
-    auto role = ctx.write(components::pressure_role);
-    auto& weights = ctx.write(mps_pair_weights_resource);
+    auto [x, kind, domain, list, n, rho, role, weights] = io.fetch(ctx);
     double* weight = weights.w.ensure(list.indices.size());  // the narrowed list has the wide one's slots
     weights.slots = list.indices.size();
     // Per row, the survivors' weights from their squared distances (a loop the compiler

@@ -7,7 +7,7 @@
 // read as 0. The gradient is written to `pressure_gradient` (an output field).
 #include <algorithm>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/mps/mps_pair_weights.hpp"
 #include "systems/mps/mps_parameters.hpp"
@@ -20,22 +20,14 @@ class MpsPressureCorrection final : public System<D> {
  public:
   explicit MpsPressureCorrection(const MpsParameters<D>& p) : p_(p) {}
   std::string name() const override { return "mps_pressure_correction"; }
-  Access access() const override {
-    return Access{}
-        .read(components::pressure, components::kind, neighbours_resource, mps_pair_weights_resource,
-              resources::dt, domain_resource<D>)
-        .write(components::position, components::velocity, components::pressure_gradient);
-  }
+  static constexpr auto io =
+      Io{reads(components::pressure, components::kind, neighbours_resource, mps_pair_weights_resource,
+               resources::dt, domain_resource<D>),
+         writes(components::position, components::velocity, components::pressure_gradient)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    const double dt = ctx.read(resources::dt);
-    const auto& nl = ctx.read(neighbours_resource);
-    const double* weight = ctx.read(mps_pair_weights_resource).of(nl, "mps_pressure_correction");
-    const auto& domain = ctx.read(domain_resource<D>);
-    auto p = ctx.read(components::pressure);
-    auto kind = ctx.read(components::kind);
-    auto x = ctx.write(components::position);
-    auto v = ctx.write(components::velocity);
-    auto grad = ctx.write(components::pressure_gradient);
+    auto [p, kind, nl, weights, dt, domain, x, v, grad] = io.fetch(ctx);
+    const double* weight = weights.of(nl, "mps_pressure_correction");
     auto pressure = [&](std::size_t j) { return p_.clamp_negative_pressure ? std::max(p[j], 0.0) : p[j]; };
     // One pass over the pairs: sum_j (p_j - p^) e_j = sum_j p_j e_j - p^ sum_j e_j with
     // e_j = r_ij w_ij / |r_ij|^2, so the local minimum p^ is applied after the loop.

@@ -17,7 +17,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/mps/mps_pair_weights.hpp"
 #include "systems/mps/mps_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
@@ -31,27 +31,20 @@ class MpsPressureEquation final : public System<D> {
  public:
   explicit MpsPressureEquation(const MpsParameters<D>& p) : p_(p) {}
   std::string name() const override { return "ppe_assembly"; }
-  Access access() const override {
-    return Access{}
-        .read(components::position, components::number_density, components::density,
-              components::pressure_role, components::id, components::kind, neighbours_resource,
-              mps_pair_weights_resource, resources::dt_chosen)
-        .write(pressure_system_resource);
-  }
+  // kind, id: to name a particle whose row is bad.
+  static constexpr auto io = Io{reads(components::position, components::number_density, components::density,
+                                      components::pressure_role, components::id, components::kind,
+                                      neighbours_resource, mps_pair_weights_resource, resources::dt_chosen),
+                                writes(pressure_system_resource)};
+  Access access() const override { return io.access(); }
   void initialise(World<D>&, Resources& res) override { res.ensure(pressure_system_resource); }
   void run(SystemContext<D>& ctx) override {
     // The control's step, not the driver's shortened one: the relaxed source gamma (n* - n0)/dt^2
     // holds a full step's compression, which a shortened step would amplify into a wrong
     // pressure (an end-time frame showed 71% of the fluid negative). The shortened step then
     // applies (dt/dt_chosen)^2 of the correction: a weaker relaxation for that one step.
-    const double dt = ctx.read(resources::dt_chosen);
-    const auto& nl = ctx.read(neighbours_resource);
-    const double* weight = ctx.read(mps_pair_weights_resource).of(nl, "ppe_assembly");
-    auto x = ctx.read(components::position);
-    auto n = ctx.read(components::number_density);
-    auto rho = ctx.read(components::density);
-    auto role = ctx.read(components::pressure_role);
-    auto& sys = ctx.write(pressure_system_resource);
+    auto [x, n, rho, role, id, kind, nl, weights, dt, sys] = io.fetch(ctx);
+    const double* weight = weights.of(nl, "ppe_assembly");
     const double c = p_.laplacian_coefficient();
     const double source = p_.relaxation * p_.rho0 / (dt * dt * p_.n0);
 
@@ -127,7 +120,7 @@ class MpsPressureEquation final : public System<D> {
            bad_row < seen && !bad_row_found.compare_exchange_weak(seen, bad_row);) {
       }
     });
-    if (bad_row_found != kNoRow) report_bad_row(ctx, sys.particle_of_row[bad_row_found], x, n);
+    if (bad_row_found != kNoRow) report_bad_row(kind, id, sys.particle_of_row[bad_row_found], x, n);
     sys.dimension = D;
     sys.bucket_width = p_.weight.support();
     sys.symmetric = true;
@@ -138,11 +131,11 @@ class MpsPressureEquation final : public System<D> {
   // A row without a positive, finite diagonal would make the system singular: a particle whose
   // number density is full but whose neighbours within r_e carry no pressure (it has passed
   // into the dummy layers), or two particles at the same point.
-  [[noreturn]] void report_bad_row(SystemContext<D>& ctx, std::size_t i, std::span<const Vec<D>> x,
+  [[noreturn]] void report_bad_row(std::span<const std::int32_t> kind, std::span<const std::int32_t> id,
+                                   std::size_t i, std::span<const Vec<D>> x,
                                    std::span<const double> n) const {
     std::ostringstream m;
-    m << (ctx.read(components::kind)[i] == kFluid ? "fluid" : "wall") << " particle id "
-      << ctx.read(components::id)[i] << " at (";
+    m << (kind[i] == kFluid ? "fluid" : "wall") << " particle id " << id[i] << " at (";
     for (int a = 0; a < D; ++a) m << (a ? ", " : "") << x[i][a];
     m << ") has n* = " << n[i] / p_.n0
       << " n0 but no pressure-carrying neighbour at a finite distance within r_e (inside the dummy wall "

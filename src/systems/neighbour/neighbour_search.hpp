@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/neighbour/candidate_list.hpp"
 #include "systems/neighbour/cell_grid.hpp"
 #include "systems/neighbour/domain.hpp"
@@ -74,35 +74,33 @@ class NeighbourSearch final : public System<D> {
       : radius_(radius), skip_kind_(skip_kind), skin_(skin), moves_within_step_(moves_within_step) {}
   std::string name() const override { return "neighbour_search"; }
   double cell_size() const { return radius_ + skin_; }  // of the grid it builds
-  Access access() const override {
-    Access a;
-    a.read(components::position, components::kind, domain_resource<D>)
-        .write(neighbours_resource, cell_grid_resource<D>);
-    if (skin_ > 0 && moves_within_step_) a.read(components::velocity, resources::dt);
-    return a;
+  // The grid is written at every build (with a skin: not every step). The velocity and dt are
+  // for the Verlet list's validity test within a step that moves the particles.
+  auto io() const {
+    return Io{reads(components::position, domain_resource<D>),
+              writes(neighbours_resource, cell_grid_resource<D>),
+              optional(skip_kind_ >= 0, reads(components::kind)),
+              optional(skin_ > 0 && moves_within_step_, reads(components::velocity, resources::dt))};
   }
+  Access access() const override { return io().access(); }
   void initialise(World<D>&, Resources& res) override {
     res.ensure(neighbours_resource);
     res.ensure(cell_grid_resource<D>);
   }
   void run(SystemContext<D>& ctx) override {
-    auto x = ctx.read(components::position);
-    const auto& domain = ctx.read(domain_resource<D>);
-    auto& out = ctx.write(neighbours_resource);
-    std::span<const std::int32_t> kind;
-    if (skip_kind_ >= 0) kind = ctx.read(components::kind);
+    // kind: empty when no kind is skipped; v, dt: empty and null without the in-step test.
+    auto [x, domain, out, grid, kind, v, dt] = io().fetch(ctx);
     if (skin_ <= 0) {
-      build_neighbour_list<D>(domain, radius_, x, ctx.write(cell_grid_resource<D>), out, kind, skip_kind_);
+      build_neighbour_list<D>(domain, radius_, x, grid, out, kind, skip_kind_);
       return;
     }
     bool valid = builds_ > 0 && ctx.structure_version() == version_ && x.size() == reference_.size();
     if (valid) {
-      const auto v = moves_within_step_ ? ctx.read(components::velocity) : std::span<const Vec<D>>{};
       auto [moved, vmax] = max_displacement_and_speed<D>(domain, x, reference_, v);
-      valid = moved + (moves_within_step_ ? vmax * ctx.read(resources::dt) : 0.0) <= 0.5 * skin_;
+      valid = moved + (moves_within_step_ ? vmax * *dt : 0.0) <= 0.5 * skin_;
     }
     if (!valid) {
-      build_candidates(domain, x, ctx.write(cell_grid_resource<D>), kind);
+      build_candidates(domain, x, grid, kind);
       reference_.assign(x.begin(), x.end());
       version_ = ctx.structure_version();
     }

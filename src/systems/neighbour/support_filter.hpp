@@ -12,7 +12,7 @@
 #include <span>
 #include <vector>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/neighbour/filter_rows.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
 
@@ -23,13 +23,10 @@ class SupportFilter final : public System<D> {
  public:
   explicit SupportFilter(double support) : support_(support) {}
   std::string name() const override { return "support_filter"; }
-  Access access() const override {
-    return Access{}.read(components::position, domain_resource<D>).write(neighbours_resource);
-  }
+  static constexpr auto io = Io{reads(components::position, domain_resource<D>), writes(neighbours_resource)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    auto x = ctx.read(components::position);
-    const auto& domain = ctx.read(domain_resource<D>);
-    auto& list = ctx.write(neighbours_resource);
+    auto [x, domain, list] = io.fetch(ctx);
     filter_neighbour_list<D>(domain, support_, x, list, list);  // in place
   }
 

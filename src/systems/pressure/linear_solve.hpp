@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "scene/scene.hpp"
 #include "solvers/krylov.hpp"
 #include "systems/pressure/pressure_system.hpp"
@@ -20,17 +20,14 @@ class LinearSolve final : public System<D> {
  public:
   explicit LinearSolve(const SolverSpec& s) : spec_(s) {}
   std::string name() const override { return "linear_solve"; }
-  Access access() const override {
-    Access a;
-    a.read(pressure_system_resource).write(components::pressure, solve_statistics_resource);
-    if (spec_.preconditioner != "none") a.read(preconditioner_resource);
-    return a;
+  auto io() const {
+    return Io{reads(pressure_system_resource), writes(components::pressure, solve_statistics_resource),
+              optional(spec_.preconditioner != "none", reads(preconditioner_resource))};
   }
+  Access access() const override { return io().access(); }
   void initialise(World<D>&, Resources& res) override { res.ensure(solve_statistics_resource); }
   void run(SystemContext<D>& ctx) override {
-    const auto& sys = ctx.read(pressure_system_resource);
-    auto p = ctx.write(components::pressure);
-    auto& stats = ctx.write(solve_statistics_resource);
+    auto [sys, p, stats, pre] = io().fetch(ctx);  // pre: null without a preconditioner
     const std::size_t rows = sys.A.rows;
     x_.assign(rows, 0.0);
     if (spec_.initial_guess == "previous")
@@ -41,10 +38,9 @@ class LinearSolve final : public System<D> {
     status.relative_residual = 0;
     if (rows > 0) {
       const solvers::Preconditioner* M = &identity_;
-      if (spec_.preconditioner != "none") {
-        const auto& pre = ctx.read(preconditioner_resource);
-        if (pre.M) M = pre.M.get();
-        preconditioner_bytes = pre.bytes;
+      if (pre) {
+        if (pre->M) M = pre->M.get();
+        preconditioner_bytes = pre->bytes;
       }
       solvers::SolveOptions o{spec_.tolerance, spec_.max_iterations};
       const bool bicgstab = spec_.krylov == "bicgstab" || !sys.symmetric;

@@ -3,7 +3,7 @@
 // profile shows setup and solve apart: "multigrid_setup" (the bucket multigrid hierarchy from the
 // current particle positions, BMG paper sections 3-4) or "jacobi_setup" (the inverse diagonal).
 // With preconditioner = none the pipeline has no setup system at all.
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "scene/scene.hpp"
 #include "solvers/bucket_multigrid.hpp"
 #include "systems/pressure/pressure_system.hpp"
@@ -28,13 +28,11 @@ class PreconditionerSetup final : public System<D> {
  public:
   explicit PreconditionerSetup(const SolverSpec& s) : spec_(s) {}
   std::string name() const override { return spec_.preconditioner + "_setup"; }
-  Access access() const override {
-    return Access{}.read(pressure_system_resource).write(preconditioner_resource);
-  }
+  static constexpr auto io = Io{reads(pressure_system_resource), writes(preconditioner_resource)};
+  Access access() const override { return io.access(); }
   void initialise(World<D>&, Resources& res) override { res.ensure(preconditioner_resource); }
   void run(SystemContext<D>& ctx) override {
-    const auto& sys = ctx.read(pressure_system_resource);
-    auto& out = ctx.write(preconditioner_resource);
+    auto [sys, out] = io.fetch(ctx);
     out.bytes = 0;
     out.levels = 0;
     if (sys.A.rows == 0) {

@@ -10,7 +10,7 @@
 // renamed.
 #include <filesystem>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "solvers/matrix_market.hpp"
 #include "systems/pressure/pressure_system.hpp"
 
@@ -21,13 +21,11 @@ class PressureSystemDump final : public System<D> {
  public:
   PressureSystemDump(std::filesystem::path dir, long long step) : dir_(std::move(dir)), step_(step) {}
   std::string name() const override { return "pressure_system_dump"; }
-  Access access() const override {
-    return Access{}.read(pressure_system_resource, components::pressure, resources::step);
-  }
+  static constexpr auto io = Io{reads(pressure_system_resource, components::pressure, resources::step)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    if (ctx.read(resources::step) != step_) return;
-    const auto& sys = ctx.read(pressure_system_resource);
-    auto p = ctx.read(components::pressure);
+    auto [sys, p, step] = io.fetch(ctx);
+    if (step != step_) return;
     std::vector<double> solution(sys.A.rows);
     for (std::size_t r = 0; r < sys.A.rows; ++r) solution[r] = p[sys.particle_of_row[r]];
     std::filesystem::create_directories(dir_);

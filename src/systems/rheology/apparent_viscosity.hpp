@@ -9,8 +9,8 @@
 // then uses the particle's temperature when it depends on it (Arrhenius).
 #include <cmath>
 
+#include "ecs/io.hpp"
 #include "ecs/outer_sum.hpp"
-#include "ecs/system.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/heat/heat_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
@@ -37,15 +37,14 @@ class ApparentViscosity final : public System<D> {
  public:
   explicit ApparentViscosity(const ApparentViscosityParameters<D>& p) : p_(p) {}
   std::string name() const override { return "viscosity_rheology"; }
-  Access access() const override {
-    Access a;
-    a.read(components::position, components::velocity, components::density, components::mass,
-           components::kind, neighbours_resource)
-        .write(components::shear_rate, components::viscosity);
-    if (uses_walls()) a.read(components::wall_velocity);
-    if (p_.rheology.temperature_dependent()) a.read(components::temperature);
-    return a;
+  auto io() const {
+    return Io{reads(components::position, components::velocity, components::density, components::mass,
+                    components::kind, neighbours_resource),
+              writes(components::shear_rate, components::viscosity),
+              optional(uses_walls(), reads(components::wall_velocity)),
+              optional(p_.rheology.temperature_dependent(), reads(components::temperature))};
   }
+  Access access() const override { return io().access(); }
   // Before the first step (frame 0): the viscosity at rest, at each particle's temperature.
   void initialise(World<D>& world, Resources&) override {
     auto& mu = world.ensure(components::viscosity);
@@ -55,17 +54,9 @@ class ApparentViscosity final : public System<D> {
       mu[i] = p_.rheology.apparent(0.0, thermal ? world.column(components::temperature)[i] : 0.0);
   }
   void run(SystemContext<D>& ctx) override {
-    auto x = ctx.read(components::position);
-    auto v = ctx.read(components::velocity);
-    auto kind = ctx.read(components::kind);
-    particle_volumes(ctx.read(components::mass), ctx.read(components::density), volume_);
-    const auto& nl = ctx.read(neighbours_resource);
-    std::span<const Vec<D>> ghost;
-    if (uses_walls()) ghost = ctx.read(components::wall_velocity);
-    std::span<const double> T;
-    if (p_.rheology.temperature_dependent()) T = ctx.read(components::temperature);
-    auto rate = ctx.write(components::shear_rate);
-    auto mu = ctx.write(components::viscosity);
+    // ghost, T: empty without no-slip walls, without a temperature-dependent model.
+    auto [x, v, rho, m, kind, nl, rate, mu, ghost, T] = io().fetch(ctx);
+    particle_volumes(m, rho, volume_);
     const double support2 = p_.kernel.support() * p_.kernel.support();
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       OuterSum<D> moments, velocity_moments;

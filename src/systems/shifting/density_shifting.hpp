@@ -22,7 +22,7 @@
 #include <cmath>
 #include <vector>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/free_surface/free_surface_detection.hpp"
 #include "systems/kernels/lattice_kernel_sum.hpp"
@@ -56,18 +56,14 @@ class ShiftingDensity final : public System<D> {
  public:
   explicit ShiftingDensity(const ShiftingParameters<D>& p) : p_(p), beta_(shifting_beta(p.kernel, p.spacing)) {}
   std::string name() const override { return "shifting_density"; }
-  Access access() const override {
-    return Access{}
-        .read(components::position, components::mass, components::kind, neighbours_resource)
-        .write(components::shifting_density);
-  }
+  static constexpr auto io =
+      Io{reads(components::position, components::mass, components::kind, neighbours_resource),
+         writes(components::shifting_density)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    const auto& nl = ctx.read(neighbours_resource);
-    auto x = ctx.read(components::position);
-    auto m = ctx.read(components::mass);
-    auto rho = ctx.write(components::shifting_density);
+    auto [x, m, kind, nl, rho] = io.fetch(ctx);
     const double radius = p_.radius();
-    for_each_of_kind(ctx.read(components::kind), kFluid, [&](std::size_t i) {
+    for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       double sum = m[i] * p_.kernel.w(0.0);
       for (auto j : nl.of(i)) {
         double r = p_.domain.offset(x[i], x[j]).norm();
@@ -87,23 +83,13 @@ class DensityShifting final : public System<D> {
  public:
   explicit DensityShifting(const ShiftingParameters<D>& p) : p_(p) {}
   std::string name() const override { return "particle_shifting"; }
-  Access access() const override {
-    return Access{}
-        .read(components::mass, components::density, components::kind, components::shifting_density,
-              components::free_surface, components::surface_normal, neighbours_resource)
-        .write(components::position, components::velocity, components::shift);
-  }
+  static constexpr auto io =
+      Io{reads(components::mass, components::density, components::kind, components::shifting_density,
+               components::free_surface, components::surface_normal, neighbours_resource),
+         writes(components::position, components::velocity, components::shift)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    const auto& nl = ctx.read(neighbours_resource);
-    auto m = ctx.read(components::mass);
-    auto density = ctx.read(components::density);
-    auto kind = ctx.read(components::kind);
-    auto rho = ctx.read(components::shifting_density);
-    auto surface = ctx.read(components::free_surface);
-    auto normal = ctx.read(components::surface_normal);
-    auto x = ctx.write(components::position);
-    auto v = ctx.write(components::velocity);
-    auto shift = ctx.write(components::shift);
+    auto [m, density, kind, rho, surface, normal, nl, x, v, shift] = io.fetch(ctx);
     particle_volumes(m, density, volume_);
     dv_.resize(m.size());
     ParticleView<D> view{std::span<const Vec<D>>(x.data(), x.size()), volume_, nl, p_.kernel, p_.domain};

@@ -23,11 +23,11 @@
 #include <cmath>
 #include <vector>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/free_surface/free_surface_detection.hpp"
+#include "systems/isph/isph_parameters.hpp"  // components::wall_normal
 #include "systems/neighbour/neighbour_list.hpp"
-#include "systems/isph/isph_parameters.hpp"             // components::wall_normal
 #include "systems/shifting/density_shifting.hpp"  // components::shift
 #include "systems/shifting/shift_velocity.hpp"
 
@@ -50,27 +50,16 @@ class FickianShifting final : public System<D> {
  public:
   explicit FickianShifting(const FickianShiftingParameters<D>& p) : p_(p), w_spacing_(p.kernel.w(p.spacing)) {}
   std::string name() const override { return "particle_shifting"; }
-  Access access() const override {
-    auto a = Access{}
-                 .read(components::mass, components::density, components::kind, components::free_surface,
-                       components::surface_normal, neighbours_resource, resources::dt)
-                 .write(components::position, components::velocity, components::shift);
-    if (p_.complete_walls) a.read(components::wall_normal);
-    return a;
+  auto io() const {
+    return Io{reads(components::mass, components::density, components::kind, components::free_surface,
+                    components::surface_normal, neighbours_resource, resources::dt),
+              writes(components::position, components::velocity, components::shift),
+              optional(p_.complete_walls, reads(components::wall_normal))};
   }
+  Access access() const override { return io().access(); }
   void run(SystemContext<D>& ctx) override {
-    const double dt = ctx.read(resources::dt);
-    const auto& nl = ctx.read(neighbours_resource);
-    auto m = ctx.read(components::mass);
-    auto density = ctx.read(components::density);
-    auto kind = ctx.read(components::kind);
-    auto surface = ctx.read(components::free_surface);
-    auto normal = ctx.read(components::surface_normal);
+    auto [m, density, kind, surface, normal, nl, dt, x, v, shift, wall_normal] = io().fetch(ctx);
     const bool complete_walls = p_.complete_walls;
-    auto wall_normal = complete_walls ? ctx.read(components::wall_normal) : std::span<const Vec<D>>{};
-    auto x = ctx.write(components::position);
-    auto v = ctx.write(components::velocity);
-    auto shift = ctx.write(components::shift);
     particle_volumes(m, density, volume_);
     dv_.resize(m.size());
     ParticleView<D> view{std::span<const Vec<D>>(x.data(), x.size()), volume_, nl, p_.kernel, p_.domain};

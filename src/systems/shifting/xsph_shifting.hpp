@@ -8,7 +8,7 @@
 // scene key (0.5 by default, Monaghan's value); the shift is capped at `max_shift` d.
 #include <vector>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/shifting/density_shifting.hpp"  // components::shift
@@ -30,20 +30,12 @@ class XsphShifting final : public System<D> {
  public:
   explicit XsphShifting(const XsphShiftingParameters<D>& p) : p_(p) {}
   std::string name() const override { return "particle_shifting"; }
-  Access access() const override {
-    return Access{}
-        .read(components::mass, components::density, components::kind, neighbours_resource, resources::dt)
-        .write(components::position, components::velocity, components::shift);
-  }
+  static constexpr auto io =
+      Io{reads(components::mass, components::density, components::kind, neighbours_resource, resources::dt),
+         writes(components::position, components::velocity, components::shift)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    const double dt = ctx.read(resources::dt);
-    const auto& nl = ctx.read(neighbours_resource);
-    auto m = ctx.read(components::mass);
-    auto rho = ctx.read(components::density);
-    auto kind = ctx.read(components::kind);
-    auto x = ctx.write(components::position);
-    auto v = ctx.write(components::velocity);
-    auto shift = ctx.write(components::shift);
+    auto [m, rho, kind, nl, dt, x, v, shift] = io.fetch(ctx);
     particle_volumes(m, rho, volume_);
     dv_.resize(m.size());
     ParticleView<D> view{std::span<const Vec<D>>(x.data(), x.size()), volume_, nl, p_.kernel, p_.domain};

@@ -25,7 +25,7 @@
 #include <cmath>
 #include <vector>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/kernels/kernel.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/swe/ghost_images.hpp"
@@ -90,13 +90,14 @@ class ParticleSplitting final : public System<D> {
  public:
   explicit ParticleSplitting(const SplitParameters& p) : p_(p) {}
   std::string name() const override { return "particle_splitting"; }
-  Access access() const override {
-    return Access{}
-        .read(components::position, components::velocity, components::area, components::depth,
-              components::water_volume, components::id, neighbours_resource, ghost_images_resource<D>,
-              swe_influence_radius_resource)
-        .write(components::parent_id, structural_changes_resource<D>, splitting_statistics_resource);
-  }
+  // The children's columns (parent_id among them) are written by the structural change, which
+  // the driver applies after the step, outside the flow graph: the system fetches none of them.
+  static constexpr auto io =
+      Io{reads(components::position, components::velocity, components::area, components::depth,
+               components::water_volume, components::id, neighbours_resource, ghost_images_resource<D>,
+               swe_influence_radius_resource),
+         writes(structural_changes_resource<D>, splitting_statistics_resource)};
+  Access access() const override { return io.access(); }
   void initialise(World<D>& world, Resources& res) override {
     auto& parent = world.ensure(components::parent_id);
     std::fill(parent.begin(), parent.end(), -1);
@@ -104,16 +105,8 @@ class ParticleSplitting final : public System<D> {
     res.ensure(splitting_statistics_resource);
   }
   void run(SystemContext<D>& ctx) override {
-    const auto& nl = ctx.read(neighbours_resource);
-    const auto& g = ctx.read(ghost_images_resource<D>);
-    const Kernel<D> w(KernelType::Spiky, ctx.read(swe_influence_radius_resource));
-    auto x = ctx.read(components::position);
-    auto v = ctx.read(components::velocity);
-    auto A = ctx.read(components::area);
-    auto h = ctx.read(components::depth);
-    auto V = ctx.read(components::water_volume);
-    auto id = ctx.read(components::id);
-    auto& stats = ctx.write(splitting_statistics_resource);
+    auto [x, v, A, h, V, id, nl, g, influence, changes, stats] = io.fetch(ctx);
+    const Kernel<D> w(KernelType::Spiky, influence);
     const double threshold = p_.area_ratio * p_.area0;
 
     std::vector<std::uint32_t> parents;
@@ -167,7 +160,6 @@ class ParticleSplitting final : public System<D> {
     stats.splits += static_cast<long long>(parents.size());
     std::vector<std::int32_t> parent_ids(parents.size());
     for (std::size_t k = 0; k < parents.size(); ++k) parent_ids[k] = id[parents[k]];
-    auto& changes = ctx.write(structural_changes_resource<D>);
     const double rho0 = p_.rho0;
     const std::size_t count = children.size();  // before the capture below moves them
     changes.append(

@@ -15,7 +15,7 @@
 #include <span>
 #include <vector>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/swe/swe_parameters.hpp"
 
 namespace ryushi {
@@ -50,12 +50,11 @@ class SweInfluenceRadius final : public System<D> {
  public:
   explicit SweInfluenceRadius(double alpha_e) : alpha_e_(alpha_e) {}
   std::string name() const override { return "swe_influence_radius"; }
-  Access access() const override {
-    return Access{}.read(components::area).write(swe_influence_radius_resource);
-  }
+  static constexpr auto io = Io{reads(components::area), writes(swe_influence_radius_resource)};
+  Access access() const override { return io.access(); }
   void initialise(World<D>&, Resources& res) override { res.ensure(swe_influence_radius_resource); }
   void run(SystemContext<D>& ctx) override {
-    auto A = ctx.read(components::area);
+    auto [A, radius] = io.fetch(ctx);
     double amax = tbb::parallel_reduce(
         tbb::blocked_range<std::size_t>(0, A.size(), 4096), 0.0,
         [&](auto r, double m) {
@@ -63,7 +62,7 @@ class SweInfluenceRadius final : public System<D> {
           return m;
         },
         [](double a, double b) { return std::max(a, b); });
-    ctx.write(swe_influence_radius_resource) = alpha_e_ * std::sqrt(amax);
+    radius = alpha_e_ * std::sqrt(amax);
   }
 
  private:
@@ -117,14 +116,13 @@ class SweGhostWalls final : public System<D> {
   SweGhostWalls(std::vector<MirrorWall> walls, bool slip, double support_factor)
       : walls_(std::move(walls)), slip_(slip), support_factor_(support_factor) {}
   std::string name() const override { return "swe_ghost_walls"; }
-  Access access() const override {
-    return Access{}.read(components::position, swe_influence_radius_resource).write(ghost_images_resource<D>);
-  }
+  static constexpr auto io =
+      Io{reads(components::position, swe_influence_radius_resource), writes(ghost_images_resource<D>)};
+  Access access() const override { return io.access(); }
   void initialise(World<D>&, Resources& res) override { res.ensure(ghost_images_resource<D>); }
   void run(SystemContext<D>& ctx) override {
-    build_ghost_images<D>(ctx.read(components::position), walls_, slip_,
-                          support_factor_ * ctx.read(swe_influence_radius_resource),
-                          ctx.write(ghost_images_resource<D>));
+    auto [x, radius, ghosts] = io.fetch(ctx);
+    build_ghost_images<D>(x, walls_, slip_, support_factor_ * radius, ghosts);
   }
 
  private:

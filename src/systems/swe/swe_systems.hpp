@@ -14,7 +14,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ecs/system.hpp"
+#include "ecs/io.hpp"
 #include "systems/kernels/kernel.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
 #include "systems/swe/ghost_images.hpp"
@@ -33,20 +33,18 @@ template <int D>
 class SweNeighbourSearch final : public System<D> {
  public:
   std::string name() const override { return "swe_neighbour_search"; }
-  Access access() const override {
-    return Access{}
-        .read(ghost_images_resource<D>, swe_influence_radius_resource, domain_resource<D>)
-        .write(neighbours_resource, cell_grid_resource<D>);
-  }
+  static constexpr auto io =
+      Io{reads(ghost_images_resource<D>, swe_influence_radius_resource, domain_resource<D>),
+         writes(neighbours_resource, cell_grid_resource<D>)};
+  Access access() const override { return io.access(); }
   void initialise(World<D>&, Resources& res) override {
     res.ensure(neighbours_resource);
     res.ensure(cell_grid_resource<D>);
   }
   void run(SystemContext<D>& ctx) override {
-    const auto& g = ctx.read(ghost_images_resource<D>);
-    const double radius = 2 * ctx.read(swe_influence_radius_resource);  // the spiky kernel's support
-    build_neighbour_list<D>(ctx.read(domain_resource<D>), radius, std::span<const Vec<D>>(g.position),
-                            ctx.write(cell_grid_resource<D>), ctx.write(neighbours_resource));
+    auto [g, influence, domain, list, grid] = io.fetch(ctx);
+    const double radius = 2 * influence;  // the spiky kernel's support
+    build_neighbour_list<D>(domain, radius, std::span<const Vec<D>>(g.position), grid, list);
   }
 };
 
@@ -57,24 +55,14 @@ class SweDepth final : public System<D> {
  public:
   explicit SweDepth(const SweParameters& p) : p_(p) {}
   std::string name() const override { return "swe_depth"; }
-  Access access() const override {
-    return Access{}
-        .read(components::position, components::water_volume, neighbours_resource, ghost_images_resource<D>,
-              swe_influence_radius_resource)
-        .write(components::depth, components::area, components::bed_elevation, components::surface_elevation,
-               components::pressure);
-  }
+  static constexpr auto io = Io{reads(components::position, components::water_volume, neighbours_resource,
+                                      ghost_images_resource<D>, swe_influence_radius_resource),
+                                writes(components::depth, components::area, components::bed_elevation,
+                                       components::surface_elevation, components::pressure)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    const auto& nl = ctx.read(neighbours_resource);
-    const auto& g = ctx.read(ghost_images_resource<D>);
-    const Kernel<D> w(KernelType::Spiky, ctx.read(swe_influence_radius_resource));
-    auto x = ctx.read(components::position);
-    auto V = ctx.read(components::water_volume);
-    auto h = ctx.write(components::depth);
-    auto A = ctx.write(components::area);
-    auto zb = ctx.write(components::bed_elevation);
-    auto zs = ctx.write(components::surface_elevation);
-    auto p = ctx.write(components::pressure);
+    auto [x, V, nl, g, influence, h, A, zb, zs, p] = io.fetch(ctx);
+    const Kernel<D> w(KernelType::Spiky, influence);
     const double w0 = w.w(0.0);
     for_each_particle(x.size(), [&](std::size_t i) {
       double sum = V[i] * w0;
@@ -111,21 +99,14 @@ class SweAcceleration final : public System<D> {
  public:
   explicit SweAcceleration(const SweParameters& p) : p_(p) {}
   std::string name() const override { return "swe_acceleration"; }
-  Access access() const override {
-    return Access{}
-        .read(components::position, components::area, components::surface_elevation, components::depth,
-              neighbours_resource, ghost_images_resource<D>, swe_influence_radius_resource)
-        .write(components::acceleration);
-  }
+  static constexpr auto io =
+      Io{reads(components::position, components::area, components::surface_elevation, components::depth,
+               neighbours_resource, ghost_images_resource<D>, swe_influence_radius_resource),
+         writes(components::acceleration)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    const auto& nl = ctx.read(neighbours_resource);
-    const auto& g = ctx.read(ghost_images_resource<D>);
-    const Kernel<D> w(KernelType::Spiky, ctx.read(swe_influence_radius_resource));
-    auto x = ctx.read(components::position);
-    auto A = ctx.read(components::area);
-    auto zs = ctx.read(components::surface_elevation);
-    auto acc = ctx.write(components::acceleration);
-    auto h = ctx.read(components::depth);
+    auto [x, A, zs, h, nl, g, influence, acc] = io.fetch(ctx);
+    const Kernel<D> w(KernelType::Spiky, influence);
     const bool sph = p_.momentum == SweParameters::Momentum::Sph;
     for_each_particle(x.size(), [&](std::size_t i) {
       double n = 0, shepard = A[i] * w.w(0.0);
@@ -182,17 +163,11 @@ class SweIntegrate final : public System<D> {
  public:
   explicit SweIntegrate(const SweParameters& p) : p_(p) {}
   std::string name() const override { return "swe_integrate"; }
-  Access access() const override {
-    return Access{}
-        .read(components::acceleration, components::depth, resources::dt)
-        .write(components::position, components::velocity);
-  }
+  static constexpr auto io = Io{reads(components::acceleration, components::depth, resources::dt),
+                                writes(components::position, components::velocity)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    const double dt = ctx.read(resources::dt);
-    auto a = ctx.read(components::acceleration);
-    auto h = ctx.read(components::depth);
-    auto x = ctx.write(components::position);
-    auto v = ctx.write(components::velocity);
+    auto [a, h, dt, x, v] = io.fetch(ctx);
     const double friction = p_.g * p_.manning * p_.manning;
     for_each_particle(x.size(), [&](std::size_t i) {
       double drag = friction > 0
@@ -222,13 +197,11 @@ class SweTimeStep final : public System<D> {
  public:
   explicit SweTimeStep(const SweParameters& p) : p_(p) {}
   std::string name() const override { return "time_step_control"; }
-  Access access() const override {
-    return Access{}.read(components::velocity, components::area, components::depth).write(resources::dt);
-  }
+  static constexpr auto io =
+      Io{reads(components::velocity, components::area, components::depth), writes(resources::dt)};
+  Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    auto v = ctx.read(components::velocity);
-    auto A = ctx.read(components::area);
-    auto h = ctx.read(components::depth);
+    auto [v, A, h, next] = io.fetch(ctx);
     double dt = tbb::parallel_reduce(
         tbb::blocked_range<std::size_t>(0, v.size(), 4096), std::numeric_limits<double>::infinity(),
         [&](auto r, double m) {
@@ -237,7 +210,7 @@ class SweTimeStep final : public System<D> {
           return m;
         },
         [](double a, double b) { return std::min(a, b); });
-    if (std::isfinite(dt)) ctx.write(resources::dt) = p_.cfl * dt;
+    if (std::isfinite(dt)) next = p_.cfl * dt;
   }
 
  private:
