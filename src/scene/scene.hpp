@@ -17,6 +17,7 @@
 #include "scene/motion_table.hpp"
 #include "scene/particle_import.hpp"
 #include "scene/registered_keys.hpp"
+#include "solvers/solver_options.hpp"
 #include "systems/rheology/rheology.hpp"
 #include "systems/swe/bed.hpp"
 
@@ -132,16 +133,7 @@ struct SystemSpec {
   toml::table params;
 };
 
-// [solver]: the linear solver of an implicit method's pressure equation.
-struct SolverSpec {
-  std::string krylov = "cg", preconditioner = "multigrid", cycle = "sw", precision = "mixed";
-  std::string initial_guess = "previous";
-  double tolerance = 1e-8;
-  int max_iterations = 1000;
-  int pre_smoothing = 1, post_smoothing = 1, bottom_smoothing = 2;
-  long long bottom_size = 64;
-  double jacobi_weight = 1.0;  // the method's default: 1 for mps, 2/3 for isph (schema)
-};
+// [solver]: SolverSpec, the options of an implicit method's linear solve (solvers/solver_options.hpp).
 
 // [swe], [bed] and [splitting]: the shallow-water method (docs/swe.md).
 struct SweSpec {

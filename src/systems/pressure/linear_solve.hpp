@@ -9,8 +9,7 @@
 #include <stdexcept>
 
 #include "ecs/io.hpp"
-#include "scene/scene.hpp"
-#include "solvers/krylov.hpp"
+#include "solvers/linear_solver.hpp"
 #include "systems/pressure/pressure_system.hpp"
 
 namespace ryushi {
@@ -18,11 +17,17 @@ namespace ryushi {
 template <int D>
 class LinearSolve final : public System<D> {
  public:
-  explicit LinearSolve(const SolverSpec& s) : spec_(s) {}
+  // The solvers are built once, here: CG or BiCGSTAB for a symmetric system, BiCGSTAB for one
+  // that is not (the system says which each step).
+  explicit LinearSolve(const SolverSpec& s)
+      : symmetric_(solvers::make_linear_solver(s, true)),
+        general_(solvers::make_linear_solver(s, false)),
+        preconditioned_(s.preconditioner != "none"),
+        previous_guess_(s.initial_guess == "previous") {}
   std::string name() const override { return "linear_solve"; }
   auto io() const {
     return Io{reads(pressure_system_resource), writes(components::pressure, solve_statistics_resource),
-              optional(spec_.preconditioner != "none", reads(preconditioner_resource))};
+              optional(preconditioned_, reads(preconditioner_resource))};
   }
   Access access() const override { return io().access(); }
   void initialise(World<D>&, Resources& res) override { res.ensure(solve_statistics_resource); }
@@ -30,7 +35,7 @@ class LinearSolve final : public System<D> {
     auto [sys, p, stats, pre] = io().fetch(ctx);  // pre: null without a preconditioner
     const std::size_t rows = sys.A.rows;
     x_.assign(rows, 0.0);
-    if (spec_.initial_guess == "previous")
+    if (previous_guess_)
       for (std::size_t r = 0; r < rows; ++r) x_[r] = p[sys.particle_of_row[r]];
     solvers::SolveStatus status;
     status.converged = true;
@@ -42,13 +47,10 @@ class LinearSolve final : public System<D> {
         if (pre->M) M = pre->M.get();
         preconditioner_bytes = pre->bytes;
       }
-      solvers::SolveOptions o{spec_.tolerance, spec_.max_iterations};
-      const bool bicgstab = spec_.krylov == "bicgstab" || !sys.symmetric;
-      stats.krylov = bicgstab ? "bicgstab" : "cg";
-      auto solve = [&](std::span<const double> b, std::span<double> x) {
-        return bicgstab ? solvers::bicgstab(sys.A, b, x, *M, o)
-                        : solvers::conjugate_gradient(sys.A, b, x, *M, o);
-      };
+      const solvers::LinearSolver& solver = sys.symmetric ? *symmetric_ : *general_;
+      stats.krylov = solver.name();
+      work_vectors_ = solver.work_vectors();
+      auto solve = [&](std::span<const double> b, std::span<double> x) { return solver.solve(sys.A, b, x, *M); };
       status = solve(sys.b, x_);
       if (status.converged && sys.gauge_free && !sys.gauge_exact) {
         // pressure_gauge.hpp: the uniform source beta that makes the pinned row's equation hold.
@@ -93,17 +95,17 @@ class LinearSolve final : public System<D> {
     const std::size_t matrix_bytes = sys.A.bytes() +
                                      (sys.b.size() + sys.coordinates.size()) * sizeof(double) +
                                      sys.particle_of_row.size() * sizeof(std::uint32_t);
-    const int work =
-        stats.krylov == "bicgstab" ? solvers::kBicgstabWorkVectors : solvers::kConjugateGradientWorkVectors;
     const std::size_t krylov_bytes =
-        (work * rows + x_.capacity() + uniform_.capacity() + z_.capacity()) * sizeof(double);
+        (work_vectors_ * rows + x_.capacity() + uniform_.capacity() + z_.capacity()) * sizeof(double);
     stats.max_matrix_bytes = std::max(stats.max_matrix_bytes, matrix_bytes);
     stats.max_preconditioner_bytes = std::max(stats.max_preconditioner_bytes, preconditioner_bytes);
     stats.max_krylov_bytes = std::max(stats.max_krylov_bytes, krylov_bytes);
   }
 
  private:
-  SolverSpec spec_;
+  std::unique_ptr<solvers::LinearSolver> symmetric_, general_;
+  bool preconditioned_, previous_guess_;
+  int work_vectors_ = solvers::kConjugateGradientWorkVectors;
   solvers::IdentityPreconditioner identity_;
   std::vector<double> x_, uniform_, z_;
 };

@@ -4,24 +4,11 @@
 // current particle positions, BMG paper sections 3-4) or "jacobi_setup" (the inverse diagonal).
 // With preconditioner = none the pipeline has no setup system at all.
 #include "ecs/io.hpp"
-#include "scene/scene.hpp"
 #include "solvers/bucket_multigrid.hpp"
+#include "solvers/solver_options.hpp"
 #include "systems/pressure/pressure_system.hpp"
 
 namespace ryushi {
-
-inline solvers::MultigridOptions multigrid_options(const SolverSpec& s) {
-  solvers::MultigridOptions o;
-  o.cycle = s.cycle == "v" ? solvers::MultigridOptions::Cycle::V : solvers::MultigridOptions::Cycle::W;
-  o.scale_correction = s.cycle == "sw";
-  o.single_precision = s.precision == "mixed";
-  o.pre_smoothing = s.pre_smoothing;
-  o.post_smoothing = s.post_smoothing;
-  o.bottom_smoothing = s.bottom_smoothing;
-  o.bottom_size = static_cast<std::size_t>(s.bottom_size);
-  o.jacobi_weight = s.jacobi_weight;
-  return o;
-}
 
 template <int D>
 class PreconditionerSetup final : public System<D> {
