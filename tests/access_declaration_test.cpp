@@ -19,6 +19,7 @@
 #include <typeinfo>
 #include <vector>
 
+#include "app/plugins.hpp"
 #include "ecs/scheduler.hpp"
 #include "methods/method.hpp"
 #include "methods/system_registry.hpp"
@@ -168,6 +169,7 @@ std::string registry_scene(const std::map<std::string, std::string>& params) {
 }  // namespace
 
 TEST_CASE("access: every system of every method fetches exactly what it declares") {
+  load_plugins({RYUSHI_EXAMPLE_PLUGIN});  // the example plugin's system and method count too
   Findings found;
   const auto dump_dir = test::scratch("access_declaration_dump");
   const std::vector<Case> cases = {
@@ -208,6 +210,8 @@ TEST_CASE("access: every system of every method fetches exactly what it declares
       {"wave_flume_isph_2d.toml", {}, "", {}, false},
       // Shallow water with particle splitting.
       {"dam_break_ritter_swe.toml", {}, "", {}, false},
+      // The example plugin's method (examples/out_of_tree/ballistic.cpp).
+      {"sloshing_2d.toml", {"method.name=ballistic", "time.dt=0.001"}, "sloshing_2d (ballistic)", {}, false},
   };
   for (auto& c : cases) run_case(c, found);
 
@@ -221,7 +225,7 @@ TEST_CASE("access: every system of every method fetches exactly what it declares
   INFO("systems whose declaration and fetches differ:" << joined(found.problems));
   CHECK(found.problems.empty());
 
-  // Coverage: every system class in src/systems and extensions/ (a new one is added here, with a
+  // Coverage: every system class in src/systems and the example plugin (a new one is added here, with a
   // scene that builds it).
   const std::vector<std::string> expected = {"NeighbourSearch",
                                              "SupportFilter",
@@ -273,7 +277,8 @@ TEST_CASE("access: every system of every method fetches exactly what it declares
                                              "SweIntegrate",
                                              "SweTimeStep",
                                              "ParticleSplitting",
-                                             "PassiveScalarDiffusion"};
+                                             "PassiveScalarDiffusion",
+                                             "BallisticDrag"};
   std::string missing;
   for (auto& name : expected)
     if (!found.classes.count(name)) missing += " " + name;

@@ -1,5 +1,6 @@
 #include <doctest/doctest.h>
 
+#include "app/plugins.hpp"
 #include "ecs/world.hpp"
 #include "methods/method.hpp"
 #include "ecs/scheduler.hpp"
@@ -86,6 +87,7 @@ TEST_CASE("world: a scene pays only for what it models") {
   CHECK(contains(viscous, "viscosity"));
   CHECK_FALSE(contains(viscous, "scalar"));
 
+  load_plugins({RYUSHI_EXAMPLE_PLUGIN});  // the example's passive_scalar_diffusion (docs/extending.md)
   auto scalar = columns_of<2>(kSceneBase +
                               "[[systems]]\nname = \"passive_scalar_diffusion\"\ndiffusivity = 1e-3\n");
   CHECK(contains(scalar, "scalar"));

@@ -37,6 +37,8 @@ set_tests_properties("checkpoint: a run killed at random moments and resumed end
                      PROPERTIES LABELS slow COST 10)
 set_tests_properties("checkpoint: SIGINT stops a checkpointed run with a checkpoint where it stopped, and resume finishes it"
                      PROPERTIES LABELS slow COST 8)
+set_tests_properties("extension: the out-of-tree example builds against an installed ryushi and runs as a plugin"
+                     PROPERTIES LABELS slow COST 60)
 # Stability cases (tests/stability/) that are also slow keep both labels.
 set_tests_properties("stability: a WCSPH sloshing tank run for 200 periods never gains energy"
                      PROPERTIES LABELS "stability;slow" COST 170)

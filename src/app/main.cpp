@@ -7,10 +7,12 @@
 #include <cstdio>
 
 #include "app/exit_codes.hpp"
+#include "app/plugins.hpp"
 #include "app/render.hpp"
 #include "app/run.hpp"
 #include "app/solve.hpp"
 #include "app/sweep.hpp"
+#include "ryushi_version.hpp"
 #include "scene/schema.hpp"
 #include "verification/free_surface_check.hpp"
 #include "verification/patch_test.hpp"
@@ -25,7 +27,7 @@ int main(int argc, char** argv) {
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
   CLI::App app{"ryushi: particle methods for fluid mechanics (WCSPH, ISPH, MPS, shallow-water MPS)"};
-  app.set_version_flag("--version", "ryushi 0.1.0");
+  app.set_version_flag("--version", "ryushi " RYUSHI_VERSION);
   app.require_subcommand(1);
 
   RunOptions run;
@@ -37,6 +39,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--set", run.sets, "Override a scene key: section.key=value (repeatable)");
   run_cmd->add_flag("--trace", run.trace, "Write trace.json (Chrome trace events, opens in Perfetto)");
   run_cmd->add_flag("--quiet", run.quiet, "No progress output and no profile table");
+  run_cmd->add_option("--plugin", run.plugins, "Load a plugin library first (repeatable; docs/extending.md)");
   run_cmd->add_option("--dump-matrix", run.dump_matrix_dir,
                       "Write the pressure system of one step to DIR: A.mtx, b.txt, x.txt (coordinates), p.txt (solution)");
   run_cmd->add_option("--dump-step", run.dump_step, "Step (from 0) whose system --dump-matrix writes (default 0)")
@@ -52,6 +55,7 @@ int main(int argc, char** argv) {
   resume_cmd->add_option("--end-time", resume.end_time, "Run on to this time instead (s)");
   resume_cmd->add_option("--threads", resume.threads, "Worker threads (default: all cores)")->check(CLI::PositiveNumber);
   resume_cmd->add_flag("--quiet", resume.quiet, "No progress output and no profile table");
+  resume_cmd->add_option("--plugin", resume.plugins, "The plugin libraries the run was started with (repeatable)");
   resume_cmd->add_option("--checkpoint-interval", resume.checkpoint_interval,
                          "Write OUT/checkpoint.h5 every T of simulated time (default: the run's own interval)")
       ->check(CLI::NonNegativeNumber);
@@ -67,6 +71,7 @@ int main(int argc, char** argv) {
   sweep_cmd->add_option("--threads", sweep.threads, "Threads per run (default 1)")->check(CLI::PositiveNumber);
   sweep_cmd->add_option("--error", sweep.error, "summary.json diagnostics key sweep.png plots (default: the first *_error)");
   sweep_cmd->add_flag("--quiet", sweep.quiet, "No log lines");
+  sweep_cmd->add_option("--plugin", sweep.plugins, "Load a plugin library in every run (repeatable)");
 
   std::string check_path;
   std::vector<std::string> check_sets;
@@ -74,12 +79,16 @@ int main(int argc, char** argv) {
   check_cmd->add_option("scene", check_path, "Scene file (TOML)")->required();
   check_cmd->add_option("--set", check_sets, "Override a scene key: section.key=value (repeatable)");
   std::string check_write_initial;
+  std::vector<std::string> check_plugins;
+  check_cmd->add_option("--plugin", check_plugins, "Load a plugin library first (repeatable)");
   check_cmd->add_option("--write-initial", check_write_initial,
                         "Also write the particles the scene makes (every column) to DIR/particles.xdmf + DIR/frames/");
 
   bool markdown = false;
   auto* keys_cmd = app.add_subcommand("keys", "Print the scene-file reference (every section and key).");
   keys_cmd->add_flag("--markdown", markdown, "Markdown (docs/scenes.md is this output)");
+  std::vector<std::string> keys_plugins;
+  keys_cmd->add_option("--plugin", keys_plugins, "Include a plugin library's methods and systems (repeatable)");
 
   PatchTestOptions patch;
   auto* patch_cmd = app.add_subcommand("patch-test", "Operator accuracy on the Franke function (V&V paper section 3).");
@@ -160,7 +169,7 @@ int main(int argc, char** argv) {
   if (*run_cmd) return run_scene(run);
   if (*resume_cmd) return resume_run(resume);
   if (*sweep_cmd) return run_sweep(sweep);
-  if (*check_cmd) return check_scene(check_path, check_sets, check_write_initial);
+  if (*check_cmd) return check_scene(check_path, check_sets, check_write_initial, check_plugins);
   if (*patch_cmd) {
     try {
       auto r = run_patch_test(patch);
@@ -191,6 +200,12 @@ int main(int argc, char** argv) {
   if (*solve_cmd) return solve_command(solve);
   if (*render_cmd) return render_command(render);
   if (*keys_cmd) {
+    try {
+      load_plugins(keys_plugins);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "ryushi: %s\n", e.what());
+      return kExitBadInput;
+    }
     std::printf("%s", schema_markdown().c_str());
     return kExitDone;
   }

@@ -20,6 +20,7 @@
 #include "app/progress.hpp"
 #include "ecs/scheduler.hpp"
 #include "io/json.hpp"
+#include "app/plugins.hpp"
 #include "methods/method.hpp"
 #include "metrics/metrics.hpp"
 #include "scene/scene.hpp"
@@ -318,7 +319,7 @@ class Runner {
       std::span<const std::uint32_t> order;
       if (!restored_order_.empty()) {
         order = restored_order_;  // the first step after a resume
-      } else if (step_ == 0) {
+      } else if (step_ == 0 || !res_.has(cell_grid_resource<D>.name)) {  // (no search: every time)
         start_grid.build(
             context_.domain,
             search_cell_ > 0 ? search_cell_ : std::max(context_.kernel.support(), 2 * context_.spacing),
@@ -432,8 +433,10 @@ class Runner {
     c.scene.dimension = D;
     c.frames = frames_;
     c.probe_rows = probe_rows_;
-    auto order = res_.get(cell_grid_resource<D>).sorted();
-    c.cell_order.assign(order.begin(), order.end());
+    if (res_.has(cell_grid_resource<D>.name)) {  // a method without a neighbour search has none
+      auto order = res_.get(cell_grid_resource<D>).sorted();
+      c.cell_order.assign(order.begin(), order.end());
+    }
     for (auto& system : scheduler_->pipeline()) c.system_states.push_back({system->name(), system->checkpoint_state(world_, res_)});
     return c;
   }
@@ -520,7 +523,9 @@ class Runner {
   void write_summary(const std::string& status, const std::string& message) {
     auto now = diagnose(world_, context_.rho0);
     double wall = wall_elapsed();
-    const auto& nl = res_.get(neighbours_resource);
+    // A method without a neighbour search (a plugin's) has no list to report.
+    static const NeighbourList empty_list;
+    const auto& nl = res_.has(neighbours_resource.name) ? res_.get(neighbours_resource) : empty_list;
     JsonWriter w;
     w.begin_object();
     w.key("scene").value(scene_.name);
@@ -670,6 +675,7 @@ int run_loaded(const RunOptions& opt, const fs::path& resume = {}, int checkpoin
   auto old_term = std::signal(SIGTERM, on_signal);
   int code = kExitInternal;
   try {
+    load_plugins(opt.plugins, opt.scene);
     Scene scene = load_scene(opt.scene, with_end_time(opt));
     if (checkpoint_dimension && scene.dimension != checkpoint_dimension)
       throw SceneError(resume.string() + ": the checkpoint is of another dimension");
@@ -717,11 +723,14 @@ int resume_run(const ResumeOptions& ro) {
   opt.sets = c.scene.overrides;  // the original run's, its end time included
   if (ro.end_time) opt.end_time = ro.end_time;
   if (ro.checkpoint_interval) opt.checkpoint_interval = ro.checkpoint_interval;
+  opt.plugins = ro.plugins;
   return run_loaded(opt, file, c.scene.dimension);
 }
 
-int check_scene(const std::string& path, const std::vector<std::string>& sets, const std::string& write_initial) {
+int check_scene(const std::string& path, const std::vector<std::string>& sets, const std::string& write_initial,
+                const std::vector<std::string>& plugins) {
   try {
+    load_plugins(plugins, path);
     Scene scene = load_scene(path, sets);
     auto build = [&](auto dim) {
       constexpr int D = decltype(dim)::value;

@@ -17,6 +17,7 @@ struct RunOptions {
   std::string dump_matrix_dir;  // write the pressure system of step dump_step here (implicit methods)
   long long dump_step = 0;
   std::optional<double> checkpoint_interval;  // overrides [output] checkpoint_interval
+  std::vector<std::string> plugins;           // --plugin libraries (app/plugins.hpp)
 };
 
 // `ryushi resume OUT`: continues the run whose checkpoint is OUT/checkpoint.h5, with the scene
@@ -27,6 +28,7 @@ struct ResumeOptions {
   std::optional<double> end_time;
   std::optional<double> checkpoint_interval;  // default: the run's own (the checkpoint's)
   bool quiet = false;
+  std::vector<std::string> plugins;  // the --plugin libraries the run was started with
 };
 
 // Runs a scene; returns the exit code (app/exit_codes.hpp). Messages go to stderr/stdout.
@@ -35,6 +37,7 @@ int resume_run(const ResumeOptions& options);
 // Validates a scene (and builds its pipeline without running it); returns the exit code.
 // Loads the scene and builds its method; with write_initial, also writes the particles it made
 // (fluid, walls, with normals and kinds) as frame 0 of DIR/particles.xdmf, to look at in ParaView.
-int check_scene(const std::string& scene, const std::vector<std::string>& sets, const std::string& write_initial = "");
+int check_scene(const std::string& scene, const std::vector<std::string>& sets, const std::string& write_initial = "",
+                const std::vector<std::string>& plugins = {});
 
 }  // namespace ryushi

@@ -1,3 +1,4 @@
+#include "app/plugins.hpp"
 #include "app/sweep.hpp"
 
 #include <fcntl.h>
@@ -145,6 +146,12 @@ int run_sweep(const SweepOptions& o) {
   const fs::path out = o.out_dir;
   for (auto& r : runs) r.dir = out / run_name(keys, r.values);
   // Every combination must load before anything runs: a typo fails now, not after hours.
+  try {
+    load_plugins(o.plugins, o.scene);
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "ryushi sweep: %s\n", e.what());
+    return kExitBadInput;
+  }
   for (auto& r : runs) {
     std::vector<std::string> sets = o.sets;
     for (std::size_t k = 0; k < keys.size(); ++k) sets.push_back(keys[k] + "=" + r.values[k]);
@@ -171,6 +178,7 @@ int run_sweep(const SweepOptions& o) {
     fs::create_directories(r.dir);
     std::vector<std::string> args{"run", o.scene, "--out", r.dir.string(), "--quiet", "--threads", std::to_string(o.threads)};
     for (auto& s : o.sets) args.insert(args.end(), {"--set", s});
+    for (auto& p : o.plugins) args.insert(args.end(), {"--plugin", p});
     for (std::size_t k = 0; k < keys.size(); ++k) args.insert(args.end(), {"--set", keys[k] + "=" + r.values[k]});
     active[spawn_run(self, args, r.dir / "log.txt")] = std::size_t(&r - runs.data());
     return true;

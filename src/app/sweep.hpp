@@ -18,6 +18,7 @@ struct SweepOptions {
   int jobs = 1, threads = 1;
   std::string error;  // the sweep.csv column sweep.png plots against wall time ("": the first *_error)
   bool quiet = false;
+  std::vector<std::string> plugins;  // --plugin libraries, for the check and every run
 };
 
 int run_sweep(const SweepOptions& options);

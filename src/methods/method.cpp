@@ -18,7 +18,7 @@ std::map<std::string, MethodRegistryEntry>& registry() {
 }  // namespace
 
 bool register_method(const std::string& name, MethodSpec spec, MethodRegistryEntry entry) {
-  register_method_spec(name, std::move(spec));  // throws for a name taken
+  if (!register_method_spec(name, std::move(spec))) return false;  // a name taken (a plugin's)
   registry().emplace(name, std::move(entry));
   return true;
 }

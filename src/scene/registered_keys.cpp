@@ -1,6 +1,7 @@
 #include "scene/registered_keys.hpp"
 
 #include <map>
+#include <memory>
 #include <stdexcept>
 
 #include "scene/scene.hpp"
@@ -21,15 +22,34 @@ unsigned long& generation() {
   static unsigned long g = 0;
   return g;
 }
+// The plugin being loaded (begin_plugin_registrations), or none.
+std::unique_ptr<PluginRegistrations>& loading() {
+  static std::unique_ptr<PluginRegistrations> p;
+  return p;
+}
+// A name taken: thrown, or recorded while a plugin loads.
+bool clash(const std::string& what) {
+  if (!loading()) throw std::logic_error(what + " registered twice");
+  loading()->clashes.push_back(what);
+  return false;
+}
 }  // namespace
+
+void begin_plugin_registrations() { loading() = std::make_unique<PluginRegistrations>(); }
+
+PluginRegistrations end_plugin_registrations() {
+  PluginRegistrations done = loading() ? std::move(*loading()) : PluginRegistrations{};
+  loading().reset();
+  return done;
+}
 
 unsigned long registered_keys_generation() {
   return generation();
 }
 
 bool register_method_spec(const std::string& name, MethodSpec spec) {
-  if (!specs().emplace(name, std::move(spec)).second)
-    throw std::logic_error("method '" + name + "' registered twice");
+  if (!specs().emplace(name, std::move(spec)).second) return clash("method '" + name + "'");
+  if (loading()) loading()->methods.push_back(name);
   ++generation();
   return true;
 }
@@ -40,8 +60,8 @@ void unregister_method_spec(const std::string& name) {
 }
 
 bool register_system_keys(const std::string& name, SystemKeys keys) {
-  if (!systems().emplace(name, std::move(keys)).second)
-    throw std::logic_error("system '" + name + "' registered twice");
+  if (!systems().emplace(name, std::move(keys)).second) return clash("system '" + name + "'");
+  if (loading()) loading()->systems.push_back(name);
   ++generation();
   return true;
 }

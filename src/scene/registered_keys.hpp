@@ -78,7 +78,8 @@ struct MethodSpec {
   MethodHooks hooks;
 };
 
-// Throws std::logic_error for a name registered twice.
+// Throws std::logic_error for a name registered twice (while a plugin loads: records it and
+// returns false, see begin_plugin_registrations).
 bool register_method_spec(const std::string& name, MethodSpec spec);
 void unregister_method_spec(const std::string& name);  // a plugin that failed to load
 std::vector<std::string> method_spec_names();          // sorted
@@ -91,11 +92,22 @@ struct SystemKeys {
   std::string doc;
   std::vector<KeySpec> keys;
 };
-bool register_system_keys(const std::string& name, SystemKeys keys);  // throws for a name taken
+bool register_system_keys(const std::string& name, SystemKeys keys);  // as register_method_spec
 void unregister_system_keys(const std::string& name);
 std::vector<std::string> system_key_names();  // sorted
 const SystemKeys* find_system_keys(const std::string& name);
 // Changes whenever a method or system is registered or removed (the schema's docs follow it).
 unsigned long registered_keys_generation();
+
+// A plugin library registers its methods and systems from its static initialisers, inside
+// dlopen, where an exception would end the program. Between begin and end, a name already taken
+// is recorded as a clash instead of thrown, and what was registered is listed, so the loader
+// can report the clash (exit 2) and take the plugin's names back out.
+struct PluginRegistrations {
+  std::vector<std::string> methods, systems;  // registered while the plugin loaded
+  std::vector<std::string> clashes;           // e.g. "method 'wcsph'"
+};
+void begin_plugin_registrations();
+PluginRegistrations end_plugin_registrations();
 
 }  // namespace ryushi

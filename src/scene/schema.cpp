@@ -227,6 +227,14 @@ std::vector<SectionSpec> build() {
                 {"surface", K::Float, "m", "(the top of the tallest fluid block)", "hydrostatic_pressure: the free-surface elevation."},
                 ranged({"max_shift", K::Float, "", "0.3", "dam_break_front: the largest time-origin shift fitted (T units)."}, 0.0, 10.0),
                 positive("t_max", "", "2.5", "dam_break_front: the error is taken over T <= t_max.")}});
+  s.push_back({"plugins", false, false,
+               "Plugin libraries the scene needs (docs/extending.md), loaded before its keys are checked, as "
+               "`ryushi run --plugin` loads them.",
+               {{"libraries", K::StringList, "", "[]",
+                 "Shared libraries built against this ryushi (find_package(ryushi CONFIG), "
+                 "ryushi_add_plugin), paths relative to the scene file. Their methods and systems register as "
+                 "built-in ones do; a missing file, a library that is not a ryushi plugin or was built against "
+                 "another version, or a name already registered is exit 2 naming the library."}}});
   s.push_back({"systems", true, false,
                "Registered systems added to the method's pipeline; the scheduler places them by their declared access. Keys besides `name` are the system's parameters (see below).",
                {{"name", K::String, "", "", "Registered system name.", true}}});

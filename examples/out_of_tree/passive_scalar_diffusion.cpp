@@ -6,13 +6,14 @@
 //   [[systems]]
 //   name = "passive_scalar_diffusion"
 //   diffusivity = 1e-3
-// No core file is edited: CMake builds every extensions/*.cpp into ryushi.
+// No core file is edited: built out of tree as a plugin (CMakeLists.txt here, `ryushi run
+// --plugin`), or dropped into extensions/ to be built into ryushi.
 #include <array>
 #include <cmath>
 
 #include "ecs/io.hpp"
 #include "ecs/lattice.hpp"
-#include "methods/system_registry.hpp"
+#include "methods/plugin.hpp"
 #include "systems/fluid/for_each_fluid.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 
