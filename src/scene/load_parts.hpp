@@ -1,0 +1,24 @@
+#pragma once
+// The scene loader's parts, each reading some sections of the validated tree into the Scene
+// (loader.cpp calls them in order; load_elastic.hpp and load_heat_rheology.hpp are two more).
+#include <toml++/toml.h>
+
+#include <string>
+
+namespace ryushi {
+
+struct Scene;
+class Validator;
+
+// Applies one `section.key=value`, `section.table.key=value` or `section.N.key=value` override.
+void apply_override(toml::table& root, const std::string& text, Validator& val);
+// [swe], [bed], [[bed_hump]], [[bed_ramp]] and [splitting] (method swe).
+void load_swe(toml::table& root, Validator& val, Scene& sc);
+// [[mesh]], [[fluid]], [[import]], [[wall]], [[solid]] and [[fixed_pressure]], with the checks
+// across them (overlaps, containers); walls and solids without `layers` take default_layers,
+// and must cover the support (covering layers) unless the method keeps fewer.
+void load_bodies(toml::table& root, Validator& val, Scene& sc, int default_layers, int covering);
+// [[probe]] and [[metric]] (reference tables read and checked).
+void load_measurements(toml::table& root, Validator& val, Scene& sc);
+
+}  // namespace ryushi
