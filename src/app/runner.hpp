@@ -1,0 +1,391 @@
+#pragma once
+// Runner<D>: one run's time loop (app/run.cpp builds it): the scene's method and its step graph,
+// steps shortened to land on frame and probe times, the health check after every step,
+// reordering, outflow, frames, probes, checkpoints and their restore, the summary
+// (app/run_summary.hpp) and the profile.
+#include <spdlog/spdlog.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "app/exit_codes.hpp"
+#include "app/health_check.hpp"
+#include "app/progress.hpp"
+#include "app/run.hpp"
+#include "app/run_files.hpp"
+#include "ecs/scheduler.hpp"
+#include "io/json.hpp"
+#include "methods/method.hpp"
+#include "metrics/metrics.hpp"
+#include "scene/scene.hpp"
+#include "systems/io/atomic_file.hpp"
+#include "systems/io/checkpoint.hpp"
+#include "systems/io/hdf5_frame.hpp"
+#include "systems/io/xdmf.hpp"
+#include "systems/neighbour/neighbour_search.hpp"
+#include "systems/pressure/pressure_system.hpp"
+#include "systems/probes/probes.hpp"
+
+namespace ryushi {
+
+namespace fs = std::filesystem;
+
+// Set by SIGINT and SIGTERM (run.cpp installs the handler); the loop stops cleanly at the next step.
+inline std::atomic<bool> g_interrupted{false};
+
+// The scene's overrides with --end-time as time.end (a run and its checkpoint keep both).
+std::vector<std::string> with_end_time(const RunOptions& opt);
+
+template <int D>
+class Runner {
+ public:
+  // resume: the checkpoint to continue from (empty: a fresh run).
+  Runner(const Scene& scene, const RunOptions& opt, fs::path resume = {})
+      : scene_(scene), opt_(opt), profiler_(opt.trace), resume_(std::move(resume)) {
+    checkpoint_interval_ = opt.checkpoint_interval ? *opt.checkpoint_interval : scene.checkpoint_interval;
+    // The text the run was started from, once: checkpoints record it and resume compares it.
+    if (checkpoint_interval_ > 0) scene_text_ = read_file(scene.path);
+  }
+
+  // Everything that can reject the input, before any file is written.
+  void prepare() {
+    PipelineOptions po{opt_.dump_matrix_dir, opt_.dump_step};
+    auto method = build_method<D>(scene_, world_, po);
+    context_ = method.context;
+    search_cell_ = method.search_cell;
+    method_parameters_ = method.parameters;
+    method_diagnostics_ = method.diagnostics;
+    method_summary_ = method.summary;
+    density_may_vanish_ = method.density_may_vanish;
+    res_.ensure(domain_resource<D>) = context_.domain;
+    res_.ensure(resources::time) = 0.0;
+    res_.ensure(resources::step) = 0;
+    scheduler_ = std::make_unique<Scheduler<D>>(std::move(method.pipeline), world_, res_, profiler_);
+    scheduler_->initialise();
+    frame_fields_ = scene_.output_fields;
+    for (auto& f : method.frame_fields)
+      if (std::find(frame_fields_.begin(), frame_fields_.end(), f) == frame_fields_.end())
+        frame_fields_.push_back(f);
+    for (auto& f : scene_.output_fields)
+      if (!world_.has(f)) {
+        std::string list;
+        for (auto& n : world_.column_names()) list += (list.empty() ? "" : ", ") + n;
+        throw SceneError(scene_.path + ": [output] fields: no per-particle field '" + f +
+                         "' in this pipeline; available: " + list);
+      }
+    res_.ensure(resources::dt) = scene_.fixed_dt > 0 ? scene_.fixed_dt : method.first_dt;
+    res_.ensure(resources::dt_chosen) = res_.get(resources::dt);
+    if (!resume_.empty()) restore();
+    HealthCheck<D> h;
+    h.density_may_vanish = density_may_vanish_;
+    h.run(world_, context_.domain);
+    if (h.index != HealthCheck<D>::kNone)
+      throw SceneError(scene_.path + ": the initial state is invalid: particle id " +
+                       std::to_string(world_.column(components::id)[h.index]) + " " + h.problem);
+  }
+
+  int run() {
+    out_ = opt_.out_dir.empty() ? fs::path("out") / scene_.name : fs::path(opt_.out_dir);
+    fs::create_directories(out_ / "frames");
+    // A fresh run removes a previous run's frames; a resumed one those written after its
+    // checkpoint (a killed run may have got further).
+    std::set<std::string> kept;
+    for (auto& f : frames_) kept.insert(fs::path(f.file).filename().string());
+    for (auto& e : fs::directory_iterator(out_ / "frames"))
+      if ((e.path().extension() == ".h5" && !kept.count(e.path().filename().string())) ||
+          e.path().extension() == ".tmp")
+        fs::remove(e.path());
+    fs::remove(out_ / "trace.json");
+    wall_start_ = std::chrono::steady_clock::now();
+    if (resume_.empty()) {
+      initial_ = diagnose(world_, context_.rho0);
+      next_checkpoint_ = checkpoint_interval_;
+    }
+    slot_output_ = profiler_.slot("output");
+    slot_probes_ = profiler_.slot("probes");
+    slot_reorder_ = profiler_.slot("reorder_by_cell");
+    slot_health_ = profiler_.slot("health_check");
+    if (!opt_.quiet) {
+      const auto& kind = world_.column(components::kind);
+      const auto elastic = static_cast<std::size_t>(std::count(kind.begin(), kind.end(), kElastic));
+      const std::string solids = elastic > 0 ? " + " + std::to_string(elastic) + " elastic" : "";
+      // A resumed run counts the checkpoint's particles (initial_ keeps only the start's mass and volume).
+      const auto now = resume_.empty() ? initial_ : diagnose(world_, context_.rho0);
+      spdlog::info("{}: {}D {}, {} fluid + {} wall{} particles, {} -> {}", scene_.name, D, scene_.method,
+                   now.fluid, now.walls - elastic, solids, method_summary_, out_.string());
+    }
+
+    std::string status = "completed", message;
+    int code = kExitDone;
+    Progress progress(time_, step_, scene_.end_time, opt_.quiet);
+    try {
+      if (resume_.empty()) {
+        sample_probes_now();
+        write_output();
+      } else {
+        write_text_atomic(out_ / "particles.xdmf", xdmf_document(frames_));
+        if (!scene_.probes.empty())
+          write_text_atomic(out_ / "probes.csv", probes_csv(scene_.probes, probe_rows_));
+        if (!opt_.quiet)
+          spdlog::info("resumed at t = {:.6g} s, step {}, frame {}", time_, step_, frames_.size());
+      }
+      while (time_ < scene_.end_time * (1 - 1e-12)) {
+        if (scene_.max_steps > 0 && step_ >= scene_.max_steps) break;
+        if (g_interrupted) {
+          status = "interrupted";
+          code = kExitInterrupted;
+          message = "interrupted by signal at t = " + std::to_string(time_) + " s";
+          // A checkpointed run stops where `ryushi resume` can continue it.
+          if (checkpoint_interval_ > 0 && step_ > 0) write_checkpoint_now();
+          break;
+        }
+        advance();
+        if (time_ >= next_probe_ * (1 - 1e-12)) sample_probes_now();
+        if (time_ >= next_output_ * (1 - 1e-12)) write_output();
+        if (checkpoint_interval_ > 0 && time_ >= next_checkpoint_ * (1 - 1e-12)) write_checkpoint_now();
+        progress.update(time_, step_);
+      }
+      if (frames_.empty() || frames_.back().time < time_) write_output();
+    } catch (const NumericalFailure& e) {
+      status = "failed";
+      code = kExitNumericalFailure;
+      message = e.what();
+    } catch (const OutputError& e) {
+      status = "failed";
+      code = kExitOutputFailed;
+      message = std::string("could not write the output: ") + e.what();
+    } catch (const std::exception& e) {
+      // An internal error: still leave a summary that says what happened, then report it.
+      progress.finish();
+      finish("error", e.what());
+      throw;
+    }
+    progress.finish();
+    try {
+      finish(status, message);
+    } catch (const OutputError& e) {  // the disk is still full: the message goes to stderr only
+      std::fprintf(stderr, "ryushi: %s\n", e.what());
+    }
+    if (code == kExitNumericalFailure)
+      std::fprintf(stderr, "ryushi: numerical failure: %s\n", message.c_str());
+    if (code == kExitOutputFailed)
+      std::fprintf(stderr, "ryushi: %s (frames and the checkpoint written before are whole)\n",
+                   message.c_str());
+    if (code == kExitInterrupted) std::fprintf(stderr, "ryushi: %s\n", message.c_str());
+    return code;
+  }
+
+ private:
+  void advance() {
+    // Also before the first step: the scene's blocks come in lattice order, walls after the
+    // fluid, so a wall and the fluid beside it sit a whole block apart in index until the first
+    // reorder (which keeps WCSPH's each-pair-once pass from running in parallel blocks). That
+    // one sorts by a grid of the neighbour search's cell (or of the kernel's support, two
+    // spacings at least, for a method without one), since no search has run yet: in another
+    // grid's order every row of the first list comes out of order and is sorted (3D MPS at 1M
+    // particles: 3 s of the first step), and so is every row rebuilt until the next reorder.
+    // It used to follow the first step, which then ran on the unsorted lattice and rebuilt the
+    // neighbour list a second time (an MPS run at 1.36M particles: 1.0 s).
+    if (scene_.reorder_interval > 0 && step_ % scene_.reorder_interval == 0) {
+      Profiler::Scope t(profiler_, slot_reorder_);
+      CellGrid<D> start_grid;
+      std::span<const std::uint32_t> order;
+      if (!restored_order_.empty()) {
+        order = restored_order_;                                         // the first step after a resume
+      } else if (step_ == 0 || !res_.has(cell_grid_resource<D>.name)) {  // (no search: every time)
+        start_grid.build(
+            context_.domain,
+            search_cell_ > 0 ? search_cell_ : std::max(context_.kernel.support(), 2 * context_.spacing),
+            world_.column(components::position));
+        order = start_grid.sorted();
+      } else {
+        order = res_.get(cell_grid_resource<D>).sorted();
+      }
+      if (order.size() == world_.size()) {
+        CommandBuffer<D> cb;
+        cb.permute({order.begin(), order.end()});
+        cb.apply(world_);
+      }
+    }
+    restored_order_.clear();
+    double& dt = res_.get(resources::dt);
+    if (scene_.fixed_dt > 0) dt = scene_.fixed_dt;
+    if (!(dt >= scene_.dt_min))
+      throw NumericalFailure("step " + std::to_string(step_) + " (t = " + fmt(time_) + " s): time step " +
+                             fmt(dt) + " s fell below time.dt_min = " + fmt(scene_.dt_min) +
+                             " s (system 'time_step_control')");
+    // Land exactly on the next output time (or time.end) without a sliver of a last step: when
+    // less than two steps remain, split the rest evenly. dt_chosen keeps the control's step.
+    res_.get(resources::dt_chosen) = dt;
+    const double target = std::min(next_output_, scene_.end_time);
+    const double rest = target - time_;
+    const bool lands = dt * (1 + 1e-9) >= rest;  // a fixed dt that divides the interval lands
+    if (lands)
+      dt = rest;
+    else if (2 * dt > rest)
+      dt = 0.5 * rest;
+    dt_used_ = dt;
+    res_.get(resources::step) = step_;
+    auto begin = std::chrono::steady_clock::now();
+    try {
+      scheduler_->step();
+    } catch (const AccessViolation&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw NumericalFailure("step " + std::to_string(step_) + ": " + e.what());
+    }
+    if (res_.has(structural_changes_resource<D>.name)) {
+      auto& changes = res_.get(structural_changes_resource<D>);
+      if (!changes.empty()) changes.apply(world_);
+    }
+    profiler_.add_step_time(std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
+    time_ = lands ? target : time_ + dt_used_;  // frame times exactly as asked, no round-off
+    res_.get(resources::time) = time_;
+    ++step_;
+    Profiler::Scope t(profiler_, slot_health_);
+    if (scene_.outflow_removes) remove_escaped_fluid();
+    HealthCheck<D> h;
+    h.density_may_vanish = density_may_vanish_;
+    h.run(world_, context_.domain, scene_.fixed_dt > 0 ? dt_used_ : 0.0, context_.spacing);
+    if (h.index != HealthCheck<D>::kNone) {
+      auto& x = world_.column(components::position)[h.index];
+      std::ostringstream m;
+      m << "step " << step_ << " (t = " << time_ << " s): particle id "
+        << world_.column(components::id)[h.index] << " " << h.problem << " at (";
+      for (int a = 0; a < D; ++a) m << (a ? ", " : "") << x[a];
+      m << ") after system '" << scheduler_->last_writer(h.column) << "'";
+      throw NumericalFailure(m.str());
+    }
+  }
+
+  // [domain] outflow = "remove": fluid particles that left the box (finite positions: a
+  // non-finite one is still a failure) are erased between steps and counted; the first is logged.
+  void remove_escaped_fluid() {
+    auto& x = world_.column(components::position);
+    auto& kind = world_.column(components::kind);
+    auto& m = world_.column(components::mass);
+    std::vector<std::uint32_t> gone;
+    for (std::size_t i = 0; i < world_.size(); ++i)
+      if (kind[i] == kFluid && x[i].allFinite() && !context_.domain.contains(x[i]))
+        gone.push_back(std::uint32_t(i));
+    if (gone.empty()) return;
+    if (removed_ == 0)
+      spdlog::warn(
+          "t = {:.6g} s: fluid particle id {} left the domain and is removed ([domain] outflow = "
+          "\"remove\"); "
+          "the count is in summary.json",
+          time_, world_.column(components::id)[gone.front()]);
+    for (auto i : gone) removed_mass_ += m[i];
+    removed_ += gone.size();
+    CommandBuffer<D> cb;
+    cb.erase(std::move(gone));
+    cb.apply(world_);
+  }
+
+  // app/run_checkpoint.hpp: the whole state as a checkpoint, its writing, and the restore.
+  Checkpoint checkpoint_state() const;
+  double wall_elapsed() const {
+    return wall_before_ +
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
+  }
+
+  void write_checkpoint_now();
+  void restore();
+  void sample_probes_now() {
+    next_probe_ = (std::floor(time_ / scene_.probe_interval + 1e-9) + 1) * scene_.probe_interval;
+    if (scene_.probes.empty()) return;
+    Profiler::Scope t(profiler_, slot_probes_);
+    auto values = sample_probes<D>(scene_.probes, world_, context_);
+    values.insert(values.begin(), time_);
+    probe_rows_.push_back(std::move(values));
+  }
+
+  void write_output() {
+    next_output_ = (std::floor(time_ / scene_.output_interval + 1e-9) + 1) * scene_.output_interval;
+    Profiler::Scope t(profiler_, slot_output_);
+    char name[64];
+    std::snprintf(name, sizeof name, "frames/frame_%05zu.h5", frames_.size());
+    auto fields = write_frame<D>(out_ / name, world_, frame_fields_, time_, step_);
+    frames_.push_back({name, time_, world_.size(), fields});
+    write_text_atomic(out_ / "particles.xdmf", xdmf_document(frames_));
+    if (!scene_.probes.empty())
+      write_text_atomic(out_ / "probes.csv", probes_csv(scene_.probes, probe_rows_));
+    write_summary("running", "");
+  }
+
+  void finish(const std::string& status, const std::string& message) {
+    if (!opt_.dump_matrix_dir.empty() && step_ <= opt_.dump_step)
+      spdlog::warn("--dump-matrix: the run ended after {} steps, before --dump-step {}; nothing was dumped",
+                   step_, opt_.dump_step);
+    if (!scene_.probes.empty())
+      write_text_atomic(out_ / "probes.csv", probes_csv(scene_.probes, probe_rows_));
+    write_summary(status, message);
+    write_text_atomic(out_ / "profile.json", profiler_.json());
+    if (opt_.trace) write_text_atomic(out_ / "trace.json", profiler_.trace_json());
+    if (!opt_.quiet) {
+      double wall = wall_elapsed();
+      std::printf("%s", profiler_.table().c_str());
+      for (auto& [name, value] : metrics()) std::printf("metric %s = %.6g\n", name.c_str(), value);
+      std::printf("%s: %s, %lld steps, t = %.6g s, wall %.2f s, %.3g particle-steps/s\n", scene_.name.c_str(),
+                  status.c_str(), step_, time_, wall, wall > 0 ? world_.size() * double(step_) / wall : 0.0);
+    }
+  }
+
+  void write_summary(const std::string& status, const std::string& message);  // run_summary.hpp
+
+  std::vector<std::pair<std::string, double>> metrics() const {
+    const double g = scene_.method == "swe" ? scene_.swe.gravity : scene_.gravity_magnitude();
+    return evaluate_metrics<D>(scene_, world_, probe_rows_, context_.rho0, g, time_);
+  }
+
+  static std::string fmt(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.6g", v);
+    return b;
+  }
+
+  const Scene& scene_;
+  const RunOptions& opt_;
+  Profiler profiler_;
+  MethodContext<D> context_;
+  std::vector<std::pair<std::string, double>> method_parameters_;
+  std::function<std::vector<std::pair<std::string, double>>(const World<D>&, const Resources&)>
+      method_diagnostics_;
+  World<D> world_;
+  Resources res_;
+  std::unique_ptr<Scheduler<D>> scheduler_;
+  std::string method_summary_;
+  std::vector<std::string> frame_fields_;  // [output] fields and what the method adds (temperature, ...)
+  bool density_may_vanish_ = false;
+  fs::path out_;
+  std::vector<FrameRecord> frames_;
+  std::vector<std::vector<double>> probe_rows_;
+  Diagnostics initial_;
+  double time_ = 0, dt_used_ = 0, next_output_ = 0, next_probe_ = 0;
+  long long step_ = 0;
+  std::size_t removed_ = 0;  // fluid particles erased by outflow = "remove"
+  double removed_mass_ = 0;
+  double search_cell_ = 0;  // MethodSetup::search_cell
+  std::size_t slot_output_ = 0, slot_probes_ = 0, slot_reorder_ = 0, slot_health_ = 0;
+  fs::path resume_;
+  std::vector<std::uint32_t> restored_order_;
+  std::string scene_text_;
+  double checkpoint_interval_ = 0, next_checkpoint_ = 0;
+  std::chrono::steady_clock::time_point wall_start_;
+  double wall_before_ = 0;  // the wall time of the segments before a resume (the checkpoint's)
+};
+
+}  // namespace ryushi
+
+#include "app/run_checkpoint.hpp"
+#include "app/run_summary.hpp"
