@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "ecs/reusable_buffer.hpp"
+#include "solvers/reusable_buffer.hpp"
 #include "solvers/vector_ops.hpp"
 
 namespace ryushi::solvers {

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "ecs/resources.hpp"
-#include "ecs/reusable_buffer.hpp"
+#include "solvers/reusable_buffer.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 
 namespace ryushi {

@@ -1,4 +1,5 @@
-// Free-surface detection as a registered system: scenes add it with
+// Free-surface detection (systems/free_surface/) as a registered system, here with the registry
+// (systems know no method layer); scenes add it with
 //   [[systems]]
 //   name = "free_surface_detection"
 //   rule = "isph2"        # marrone | isph2 | mps
