@@ -43,8 +43,4 @@ std::vector<std::pair<std::string, double>> evaluate_metrics(const Scene& scene,
                                                              const ProbeRows& probes, double rho0, double g,
                                                              double time);
 
-// A reference table (two numeric columns after optional '#' comment lines and a header line).
-// Throws SceneError "file:line: message" on a malformed line.
-std::vector<std::pair<double, double>> read_reference_table(const std::string& path);
-
 }  // namespace ryushi

@@ -9,7 +9,7 @@
 #include "scene/load_common.hpp"
 #include "scene/load_parts.hpp"
 #include "scene/validator.hpp"
-#include "metrics/metrics.hpp"
+#include "scene/reference_table.hpp"
 
 namespace ryushi {
 
