@@ -32,7 +32,7 @@ std::vector<std::pair<double, double>> ring(double r, double d, double phase) {
 }  // namespace
 
 template <int D>
-SolidShape<D>::SolidShape(const SolidSpec& spec, std::shared_ptr<const TriangleMesh> mesh)
+SolidShape<D>::SolidShape(const ShapeSpec& spec, std::shared_ptr<const TriangleMesh> mesh)
     : spec_(spec),
       mesh_(std::move(mesh)),
       lo_(to_vec<D>(spec.min)),

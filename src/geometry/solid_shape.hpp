@@ -1,5 +1,5 @@
 #pragma once
-// The shapes of [[solid]] bodies (scene.hpp SolidSpec): the signed distance that cuts fluid out
+// The shapes of [[solid]] bodies (geometry/shape_spec.hpp; scene.hpp SolidSpec): the signed distance that cuts fluid out
 // of the blocks, and the wall particles of the body's outer layers with the normal each method
 // asks for (from the fluid into the body) and its layer (1 = touching the fluid). A container
 // (spec.container) is the same shape turned inside out: its wall is everything outside it.
@@ -10,7 +10,7 @@
 
 #include "ecs/math.hpp"
 #include "geometry/triangle_mesh.hpp"
-#include "scene/scene.hpp"
+#include "geometry/shape_spec.hpp"
 
 namespace ryushi {
 
@@ -30,7 +30,7 @@ class SolidShape {
   // spec.min/max bound the shape (the loader sets them for a cylinder and a sphere; a 3D
   // cylinder's run through the domain along its axis).
   // mesh: the [[mesh]] of a shape = "mesh" body (3D), else null.
-  explicit SolidShape(const SolidSpec& spec, std::shared_ptr<const TriangleMesh> mesh = nullptr);
+  explicit SolidShape(const ShapeSpec& spec, std::shared_ptr<const TriangleMesh> mesh = nullptr);
   // Negative inside the body, positive outside; exact for the box, disc, cylinder and sphere. For
   // a container, negative in its walls (outside the shape), positive where the fluid is.
   double signed_distance(const Vec<D>& x) const;
@@ -53,7 +53,7 @@ class SolidShape {
   double shape_distance(const Vec<D>& x) const;  // negative inside the shape
   double round_surface() const;
   bool endless(int axis) const { return axis < static_cast<int>(spec_.endless.size()) && spec_.endless[axis]; }
-  SolidSpec spec_;
+  ShapeSpec spec_;
   std::shared_ptr<const TriangleMesh> mesh_;
   Vec<D> lo_, hi_, centre_;
 };

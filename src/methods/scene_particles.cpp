@@ -59,7 +59,7 @@ SceneParticles<D> scene_particles(const Scene& s, bool ring_containers) {
     Vec<D> centre = 0.5 * (scene_vector<D>(b.min) + scene_vector<D>(b.max));
     std::optional<SolidShape<D>> round;  // a disc, cylinder or ball of fluid: the same shape as a body's
     if (b.shape != "box") {
-      SolidSpec shape;
+      ShapeSpec shape;
       shape.shape = b.shape, shape.centre = b.centre, shape.radius = b.radius, shape.axis = b.axis;
       shape.min = b.min, shape.max = b.max;
       round.emplace(shape);

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "geometry/shape_spec.hpp"
 #include "geometry/triangle_mesh.hpp"
 #include "scene/motion_table.hpp"
 #include "scene/particle_import.hpp"
@@ -71,18 +72,9 @@ struct MeshSpec {
 };
 // [[solid]]: an obstacle, a plate or a lid, as `layers` of wall particles inside its shape
 // (src/geometry/solid_shape.hpp). Fluid within half a spacing of it is cut out of the blocks.
-struct SolidSpec {
-  std::string name, shape;         // shape: box, cylinder (a disc in 2D), sphere, mesh
-  int mesh = -1;                   // mesh: the [[mesh]]'s index
-  std::vector<double> min, max;    // box
-  std::vector<double> centre;      // cylinder, sphere
-  double radius = 0;
-  int axis = 2;                    // 3D cylinder: the axis it runs along (through the whole domain)
-  int layers = 3;
-  bool container = false;          // walls outside the shape, the fluid inside (min/max: still the shape's)
-  // box: per axis, whether it spans a periodic axis of the domain end to end (a plate of a
-  // Couette flow): no faces across it, its particles' normals have no part along it.
-  std::vector<bool> endless;
+struct SolidSpec : ShapeSpec {
+  std::string name;
+  int mesh = -1;                   // shape = "mesh": the [[mesh]]'s index
   std::vector<double> velocity;    // prescribed, constant (a lid, a plate); the particles stay put
   // Prescribed motion: per axis a formula of t and the particle's rest position x, y, z (the
   // particles move; empty: none). *_where: the key's place, for errors.
