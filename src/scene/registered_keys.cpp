@@ -35,7 +35,9 @@ bool clash(const std::string& what) {
 }
 }  // namespace
 
-void begin_plugin_registrations() { loading() = std::make_unique<PluginRegistrations>(); }
+void begin_plugin_registrations() {
+  loading() = std::make_unique<PluginRegistrations>();
+}
 
 PluginRegistrations end_plugin_registrations() {
   PluginRegistrations done = loading() ? std::move(*loading()) : PluginRegistrations{};
@@ -47,50 +49,59 @@ unsigned long registered_keys_generation() {
   return generation();
 }
 
-bool register_method_spec(const std::string& name, MethodSpec spec) {
-  if (!specs().emplace(name, std::move(spec)).second) return clash("method '" + name + "'");
-  if (loading()) loading()->methods.push_back(name);
+namespace {
+// The one way into either registry: a name taken is a clash (thrown, or recorded while a plugin
+// loads); a name added while a plugin loads is listed for its roll-back.
+template <class Entry>
+bool add(std::map<std::string, Entry>& registry, const std::string& kind, const std::string& name,
+         Entry entry, std::vector<std::string> PluginRegistrations::*added) {
+  if (!registry.emplace(name, std::move(entry)).second) return clash(kind + " '" + name + "'");
+  if (loading()) ((*loading()).*added).push_back(name);
   ++generation();
   return true;
 }
-
-void unregister_method_spec(const std::string& name) {
-  specs().erase(name);
+template <class Entry>
+void remove(std::map<std::string, Entry>& registry, const std::string& name) {
+  registry.erase(name);
   ++generation();
+}
+template <class Entry>
+std::vector<std::string> names_of(const std::map<std::string, Entry>& registry) {
+  std::vector<std::string> names;
+  for (auto& [n, _] : registry) names.push_back(n);
+  return names;
+}
+template <class Entry>
+const Entry* find_in(const std::map<std::string, Entry>& registry, const std::string& name) {
+  auto it = registry.find(name);
+  return it == registry.end() ? nullptr : &it->second;
+}
+}  // namespace
+
+bool register_method_spec(const std::string& name, MethodSpec spec) {
+  return add(specs(), "method", name, std::move(spec), &PluginRegistrations::methods);
+}
+void unregister_method_spec(const std::string& name) {
+  remove(specs(), name);
+}
+std::vector<std::string> method_spec_names() {
+  return names_of(specs());
+}
+const MethodSpec* find_method_spec(const std::string& name) {
+  return find_in(specs(), name);
 }
 
 bool register_system_keys(const std::string& name, SystemKeys keys) {
-  if (!systems().emplace(name, std::move(keys)).second) return clash("system '" + name + "'");
-  if (loading()) loading()->systems.push_back(name);
-  ++generation();
-  return true;
+  return add(systems(), "system", name, std::move(keys), &PluginRegistrations::systems);
 }
-
 void unregister_system_keys(const std::string& name) {
-  systems().erase(name);
-  ++generation();
+  remove(systems(), name);
 }
-
 std::vector<std::string> system_key_names() {
-  std::vector<std::string> names;
-  for (auto& [n, _] : systems()) names.push_back(n);
-  return names;
+  return names_of(systems());
 }
-
 const SystemKeys* find_system_keys(const std::string& name) {
-  auto it = systems().find(name);
-  return it == systems().end() ? nullptr : &it->second;
-}
-
-std::vector<std::string> method_spec_names() {
-  std::vector<std::string> names;
-  for (auto& [n, _] : specs()) names.push_back(n);
-  return names;
-}
-
-const MethodSpec* find_method_spec(const std::string& name) {
-  auto it = specs().find(name);
-  return it == specs().end() ? nullptr : &it->second;
+  return find_in(systems(), name);
 }
 
 std::vector<std::string> methods_owning_key(const std::string& key) {

@@ -4,31 +4,24 @@ namespace ryushi::solvers {
 
 namespace {
 
-class ConjugateGradientSolver final : public LinearSolver {
+// CG or BiCGSTAB (krylov.hpp) with the spec's tolerance and iteration cap.
+class KrylovSolver final : public LinearSolver {
  public:
-  explicit ConjugateGradientSolver(SolveOptions o) : options_(o) {}
-  std::string name() const override { return "cg"; }
-  int work_vectors() const override { return kConjugateGradientWorkVectors; }
+  using Method = SolveStatus (*)(const CsrMatrix<double>&, std::span<const double>, std::span<double>,
+                                 const Preconditioner&, const SolveOptions&);
+  KrylovSolver(std::string name, int work_vectors, Method method, SolveOptions options)
+      : name_(std::move(name)), work_vectors_(work_vectors), method_(method), options_(options) {}
+  std::string name() const override { return name_; }
+  int work_vectors() const override { return work_vectors_; }
   SolveStatus solve(const CsrMatrix<double>& A, std::span<const double> b, std::span<double> x,
                     const Preconditioner& M) const override {
-    return conjugate_gradient(A, b, x, M, options_);
+    return method_(A, b, x, M, options_);
   }
 
  private:
-  SolveOptions options_;
-};
-
-class BicgstabSolver final : public LinearSolver {
- public:
-  explicit BicgstabSolver(SolveOptions o) : options_(o) {}
-  std::string name() const override { return "bicgstab"; }
-  int work_vectors() const override { return kBicgstabWorkVectors; }
-  SolveStatus solve(const CsrMatrix<double>& A, std::span<const double> b, std::span<double> x,
-                    const Preconditioner& M) const override {
-    return bicgstab(A, b, x, M, options_);
-  }
-
- private:
+  std::string name_;
+  int work_vectors_;
+  Method method_;
   SolveOptions options_;
 };
 
@@ -36,8 +29,9 @@ class BicgstabSolver final : public LinearSolver {
 
 std::unique_ptr<LinearSolver> make_linear_solver(const SolverSpec& spec, bool symmetric) {
   const SolveOptions o{spec.tolerance, spec.max_iterations};
-  if (spec.krylov == "bicgstab" || !symmetric) return std::make_unique<BicgstabSolver>(o);
-  return std::make_unique<ConjugateGradientSolver>(o);
+  if (spec.krylov == "bicgstab" || !symmetric)
+    return std::make_unique<KrylovSolver>("bicgstab", kBicgstabWorkVectors, &bicgstab, o);
+  return std::make_unique<KrylovSolver>("cg", kConjugateGradientWorkVectors, &conjugate_gradient, o);
 }
 
 }  // namespace ryushi::solvers
