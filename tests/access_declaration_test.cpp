@@ -11,7 +11,6 @@
 #include <doctest/doctest.h>
 
 #include <cstdlib>
-#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -24,9 +23,6 @@
 #include "methods/method.hpp"
 #include "methods/system_registry.hpp"
 #include "scene/scene.hpp"
-#include "systems/fluid/continuity_delta_sph.hpp"
-#include "systems/fluid/laminar_viscosity_morris.hpp"
-#include "systems/fluid/momentum.hpp"
 #include "test_util.hpp"
 
 using namespace ryushi;
@@ -78,15 +74,14 @@ void compare(const Scheduler<D>& s, const std::string& label, Findings& out) {
 }
 
 // The driver's loop, cut down: the resources it provides, then `steps` steps with the structural
-// changes applied between them. `extra` appends systems to the method's pipeline.
+// changes applied between them.
 template <int D>
 void run_scene_steps(const Scene& scene, const PipelineOptions& options, int steps, const std::string& label,
-                     Findings& out, const std::function<void(MethodSetup<D>&)>& extra) {
+                     Findings& out) {
   World<D> world;
   Resources res;
   Profiler profiler;
   auto method = build_method<D>(scene, world, options);
-  if (extra) extra(method);
   res.ensure(domain_resource<D>) = method.context.domain;
   res.ensure(resources::time) = 0.0;
   res.ensure(resources::step) = 0;
@@ -116,7 +111,6 @@ struct Case {
   std::vector<std::string> sets;  // overrides, as --set
   std::string label;
   PipelineOptions options{};
-  bool wcsph_references = false;  // append the reference systems of the fused WCSPH pass
 };
 
 void run_case(const Case& c, Findings& out, int steps = 3) {
@@ -126,21 +120,7 @@ void run_case(const Case& c, Findings& out, int steps = 3) {
   INFO("scene " << label);
   auto run = [&](auto dim) {
     constexpr int D = decltype(dim)::value;
-    std::function<void(MethodSetup<D>&)> extra;
-    if (c.wcsph_references)
-      extra = [](MethodSetup<D>& m) {
-        // Viscous and with delta-SPH, so that every optional entry of theirs is taken.
-        WcsphParameters<D> p;
-        p.kernel = m.context.kernel;
-        p.domain = m.context.domain;
-        p.rho0 = m.context.rho0;
-        p.mu = 1e-3;
-        p.delta = 0.1;
-        m.pipeline.push_back(std::make_shared<ContinuityDeltaSph<D>>(p));
-        m.pipeline.push_back(std::make_shared<Momentum<D>>(p));
-        m.pipeline.push_back(std::make_shared<LaminarViscosityMorris<D>>(p));
-      };
-    run_scene_steps<D>(scene, c.options, steps, label, out, extra);
+    run_scene_steps<D>(scene, c.options, steps, label, out);
   };
   if (scene.dimension == 2)
     run(std::integral_constant<int, 2>{});
@@ -173,45 +153,36 @@ TEST_CASE("access: every system of every method fetches exactly what it declares
   Findings found;
   const auto dump_dir = test::scratch("access_declaration_dump");
   const std::vector<Case> cases = {
-      // WCSPH: the leapfrog, then the midpoint with smoothing, shifting and the reference systems.
-      {"dam_break_2d.toml", {}, "", {}, false},
+      // WCSPH: the leapfrog, then the midpoint with smoothing, shifting and laminar viscosity.
+      {"dam_break_2d.toml", {}, "", {}},
       {"dam_break_2d.toml",
        {"method.integrator=\"midpoint\"", "method.velocity_smoothing=0.05", "shifting.model=\"xsph\"",
         "material.viscosity=1e-3"},
        "dam_break_2d (midpoint, xsph)",
-       {},
-       true},
-      {"dam_break_2d.toml", {"shifting.model=\"fickian\""}, "dam_break_2d (fickian)", {}, false},
-      {"conduction_2d.toml", {}, "", {}, false},
-      {"conduction_2d.toml", {"method.integrator=\"midpoint\""}, "conduction_2d (midpoint)", {}, false},
-      {"cooling_slump_2d.toml", {}, "", {}, false},
-      {"poiseuille_bingham_2d.toml", {}, "", {}, false},
-      {"couette_2d.toml", {}, "", {}, false},
-      {"wave_flume_2d.toml", {}, "", {}, false},
-      {"elastic_gate_2d.toml", {}, "", {}, false},
-      {"elastic_plate_2d.toml",
-       {"method.solid_formulation=\"updated\""},
-       "elastic_plate_2d (updated)",
-       {},
-       false},
+       {}},
+      {"dam_break_2d.toml", {"shifting.model=\"fickian\""}, "dam_break_2d (fickian)", {}},
+      {"conduction_2d.toml", {}, "", {}},
+      {"conduction_2d.toml", {"method.integrator=\"midpoint\""}, "conduction_2d (midpoint)", {}},
+      {"cooling_slump_2d.toml", {}, "", {}},
+      {"poiseuille_bingham_2d.toml", {}, "", {}},
+      {"couette_2d.toml", {}, "", {}},
+      {"wave_flume_2d.toml", {}, "", {}},
+      {"elastic_gate_2d.toml", {}, "", {}},
+      {"elastic_plate_2d.toml", {"method.solid_formulation=\"updated\""}, "elastic_plate_2d (updated)", {}},
       // MPS, once with the matrix dump (its system reads the step to dump).
-      {"dam_break_mps_2d.toml", {}, "", {}, false},
-      {"hydrostatic_mps_2d.toml", {}, "", PipelineOptions{dump_dir, 1}, false},
+      {"dam_break_mps_2d.toml", {}, "", {}},
+      {"hydrostatic_mps_2d.toml", {}, "", PipelineOptions{dump_dir, 1}},
       // ISPH: each shifting model, the Eulerian pipe with fixed pressures, a moving body.
-      {"dam_break_isph_2d.toml", {}, "", {}, false},
-      {"dam_break_isph_2d.toml",
-       {"shifting.model=\"density\""},
-       "dam_break_isph_2d (density shifting)",
-       {},
-       false},
-      {"dam_break_isph_2d.toml", {"shifting.model=\"xsph\""}, "dam_break_isph_2d (xsph shifting)", {}, false},
-      {"dam_break_isph2_2d.toml", {}, "", {}, false},
-      {"poiseuille_isph_2d.toml", {}, "", {}, false},
-      {"wave_flume_isph_2d.toml", {}, "", {}, false},
+      {"dam_break_isph_2d.toml", {}, "", {}},
+      {"dam_break_isph_2d.toml", {"shifting.model=\"density\""}, "dam_break_isph_2d (density shifting)", {}},
+      {"dam_break_isph_2d.toml", {"shifting.model=\"xsph\""}, "dam_break_isph_2d (xsph shifting)", {}},
+      {"dam_break_isph2_2d.toml", {}, "", {}},
+      {"poiseuille_isph_2d.toml", {}, "", {}},
+      {"wave_flume_isph_2d.toml", {}, "", {}},
       // Shallow water with particle splitting.
-      {"dam_break_ritter_swe.toml", {}, "", {}, false},
+      {"dam_break_ritter_swe.toml", {}, "", {}},
       // The example plugin's method (examples/out_of_tree/ballistic.cpp).
-      {"sloshing_2d.toml", {"method.name=ballistic", "time.dt=0.001"}, "sloshing_2d (ballistic)", {}, false},
+      {"sloshing_2d.toml", {"method.name=ballistic", "time.dt=0.001"}, "sloshing_2d (ballistic)", {}},
   };
   for (auto& c : cases) run_case(c, found);
 
@@ -220,7 +191,7 @@ TEST_CASE("access: every system of every method fetches exactly what it declares
   test::write_text(dir / "registry.toml",
                    registry_scene({{"passive_scalar_diffusion", "diffusivity = 1e-3\n"},
                                    {"free_surface_detection", "rule = \"marrone\"\n"}}));
-  run_case({(dir / "registry.toml").string(), {}, "registry scene", {}, false}, found);
+  run_case({(dir / "registry.toml").string(), {}, "registry scene", {}}, found);
 
   INFO("systems whose declaration and fetches differ:" << joined(found.problems));
   CHECK(found.problems.empty());
@@ -233,9 +204,6 @@ TEST_CASE("access: every system of every method fetches exactly what it declares
                                              "PrescribedMotion",
                                              "RenormalisedDensityGradient",
                                              "WcsphPairForces",
-                                             "ContinuityDeltaSph",
-                                             "Momentum",
-                                             "LaminarViscosityMorris",
                                              "TaitEquationOfState",
                                              "XsphVelocitySmoothing",
                                              "ApparentViscosity",

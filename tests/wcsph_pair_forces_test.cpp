@@ -1,25 +1,23 @@
-// The fused WCSPH pair pass (src/systems/fluid/wcsph_pair_forces.hpp) against the three systems
-// that hold its formulas one term each (continuity + delta-SPH, pressure + artificial viscosity,
-// Morris viscosity). A jittered lattice of fluid inside three layers of walls with random
-// velocities, densities, pressures, viscosities, density gradients and wall ghost velocities, so
-// every branch is taken (approaching and receding pairs, fluid-wall pairs, no-slip and slip).
-// The two may differ only by round-off: the fused pass multiplies by 1/rho and 1/(r^2 + eta^2)
-// where the reference divides, a few ulp per pair, summed over ~30 pairs of either sign. The
-// tolerance is 1e-12 of the size of the largest term of each sum (sum of |terms| would be
-// tighter; this is the simplest bound that is still 1e4 above the expected ~1e-16 x 30).
-// A neighbour list with a skin (pairs beyond the support) must give the same result: the pass
-// skips them, the references see zero kernel gradients there. Both variants of the pass are
-// checked: one-sided (each particle gathers all its pairs) and each pair once (from the lower
-// index, both sides accumulated; the sums come in another order, still round-off).
+// The fused WCSPH pair pass (src/systems/fluid/wcsph_pair_forces.hpp: the pair loop with the
+// continuity + delta-SPH, pressure + artificial viscosity and Morris viscosity terms) against a
+// direct evaluation of the same formulas written here, over every pair of particles with the
+// divisions as the seed prints them and no neighbour list. A jittered lattice of fluid inside
+// three layers of walls with random velocities, densities, pressures, viscosities, density
+// gradients and wall ghost velocities, so every branch is taken (approaching and receding pairs,
+// fluid-wall pairs, no-slip and slip). The two may differ only by round-off: the pass multiplies
+// by 1/rho and 1/(r^2 + eta^2) where the reference divides, a few ulp per pair, summed over ~30
+// pairs of either sign. The tolerance is 1e-12 of the size of the largest term of each sum (sum
+// of |terms| would be tighter; this is the simplest bound that is still 1e4 above the expected
+// ~1e-16 x 30). A neighbour list with a skin (pairs beyond the support) must give the same
+// result: the pass skips them. Both strategies of the loop are checked: gather (each particle
+// visits all its pairs) and each pair once (from the lower index, both sides accumulated; the
+// sums come in another order, still round-off).
 #include "systems/fluid/wcsph_pair_forces.hpp"
 
 #include <doctest/doctest.h>
 
 #include <random>
 
-#include "systems/fluid/continuity_delta_sph.hpp"
-#include "systems/fluid/laminar_viscosity_morris.hpp"
-#include "systems/fluid/momentum.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
 
 using namespace ryushi;
@@ -58,6 +56,56 @@ void run_system(System<D>& s, World<D>& w, Resources& res) {
   auto access = s.access();
   SystemContext<D> ctx(w, res, access, "test");
   s.run(ctx);
+}
+
+// The pair terms as the seed writes them (seed 002 eqs. 17-19 and 22-24, Morris 1997), summed
+// over every other particle within the support.
+template <int D>
+void direct_evaluation(const World<D>& w, const WcsphParameters<D>& p, std::vector<double>& drho,
+                       std::vector<Vec<D>>& a) {
+  const auto& x = w.column(components::position);
+  const auto& v = w.column(components::velocity);
+  const auto& rho = w.column(components::density);
+  const auto& pr = w.column(components::pressure);
+  const auto& m = w.column(components::mass);
+  const auto& mu = w.column(components::viscosity);
+  const auto& grad = w.column(components::density_gradient);
+  const auto& vw = w.column(components::wall_velocity);
+  const auto& kind = w.column(components::kind);
+  const double h = p.kernel.h(), eta2 = 0.01 * h * h, support = p.kernel.support();
+  drho.assign(w.size(), 0.0);
+  a.assign(w.size(), Vec<D>::Zero());
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    if (kind[i] != kFluid) continue;
+    double divergence = 0, diffusive = 0;
+    Vec<D> acc = Vec<D>::Zero();
+    for (std::size_t j = 0; j < w.size(); ++j) {
+      const Vec<D> xij = x[i] - x[j];
+      const double r = xij.norm();
+      if (j == i || r >= support) continue;
+      const Vec<D> gradW = xij * p.kernel.grad_factor(r);
+      const Vec<D> vij = v[i] - v[j];
+      const double Vj = m[j] / rho[j];
+      const bool fluid_j = kind[j] == kFluid;
+      divergence += Vj * vij.dot(gradW);
+      if (fluid_j)
+        diffusive +=
+            Vj * (2.0 * (rho[j] - rho[i]) * (-xij).dot(gradW) / (r * r) - (grad[i] + grad[j]).dot(gradW));
+      double Pi = 0;
+      if (vij.dot(xij) < 0) {
+        const double mu_ij = h * vij.dot(xij) / (r * r + eta2);
+        Pi = (-p.alpha * p.c0 * mu_ij + p.beta * mu_ij * mu_ij) / (0.5 * (rho[i] + rho[j]));
+      }
+      acc -= m[j] * ((pr[i] + pr[j]) / (rho[i] * rho[j]) + Pi) * gradW;
+      if (fluid_j || p.wall_no_slip) {
+        const double mu_j = fluid_j ? mu[j] : mu[i];
+        const Vec<D> v_j = fluid_j ? v[j] : vw[j];
+        acc += m[j] * (mu[i] + mu_j) / (rho[i] * rho[j]) * xij.dot(gradW) / (r * r + eta2) * (v[i] - v_j);
+      }
+    }
+    drho[i] = rho[i] * divergence + p.delta * h * p.c0 * diffusive;
+    a[i] = acc + p.gravity;
+  }
 }
 
 template <int D>
@@ -112,17 +160,12 @@ void check_fused_matches_reference(bool no_slip, double skin, bool pairs_once) {
   build_neighbour_list<D>(p.domain, p.kernel.support() + skin, w.column(components::position), grid, nl,
                           w.column(components::kind), kWall);
 
-  ContinuityDeltaSph<D> continuity(p);
-  Momentum<D> momentum(p);
-  LaminarViscosityMorris<D> viscosity(p);
   WcsphPairForces<D> fused(p);
   fused.set_pairs_once(pairs_once ? PairsOnce::Always : PairsOnce::Never);
-  // The viscosity systems' initialise() fills a uniform mu; keep the random one.
-  run_system<D>(continuity, w, res);
-  run_system<D>(momentum, w, res);
-  run_system<D>(viscosity, w, res);
-  auto ref_drho = w.column(components::density_rate);
-  auto ref_a = w.column(components::acceleration);
+  // The viscosity's initialise() fills a uniform mu; keep the random one.
+  std::vector<double> ref_drho;
+  std::vector<Vec<D>> ref_a;
+  direct_evaluation<D>(w, p, ref_drho, ref_a);
   run_system<D>(fused, w, res);
   const auto& drho = w.column(components::density_rate);
   const auto& a = w.column(components::acceleration);

@@ -1,8 +1,8 @@
 // Worked example of a user system (docs/extending.md walks through it): a passive scalar phi
 // carried by the fluid and diffusing with the SPH Laplacian of Morris et al. (1997),
 //   dphi_i/dt = kappa c sum_j (m_j / rho_ij) 2 (phi_i - phi_j) x_ij . grad_i W_ij / (r^2 + 0.01 h^2)
-// with rho_ij = (rho_i + rho_j)/2 and c the lattice normalisation below. The pair term is antisymmetric, so sum_i m_i phi_i is
-// conserved to round-off. Registered by name; a scene adds it with
+// with rho_ij = (rho_i + rho_j)/2 and c the lattice normalisation below. The pair term is antisymmetric, so
+// sum_i m_i phi_i is conserved to round-off. Registered by name; a scene adds it with
 //   [[systems]]
 //   name = "passive_scalar_diffusion"
 //   diffusivity = 1e-3
@@ -14,7 +14,7 @@
 #include "ecs/io.hpp"
 #include "ecs/lattice.hpp"
 #include "methods/plugin.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 
 namespace ryushi::example {
@@ -102,16 +102,18 @@ class PassiveScalarDiffusion final : public System<D> {
 };
 
 namespace {
-KeySpec param(std::string key, KeyType type, std::string unit, std::string def, std::string doc, bool required = false) {
+KeySpec param(std::string key, KeyType type, std::string unit, std::string def, std::string doc,
+              bool required = false) {
   return KeySpec{std::move(key), type, std::move(unit), std::move(def), std::move(doc), required};
 }
 }  // namespace
 
-RYUSHI_REGISTER_SYSTEM(PassiveScalarDiffusion, "passive_scalar_diffusion",
-                       "Passive scalar `scalar` diffusing with the SPH (Morris) Laplacian; worked example of docs/extending.md.",
-                       {param("diffusivity", KeyType::Float, "m^2/s", "", "Diffusivity kappa.", true),
-                        param("centre", KeyType::Vector, "m", "(origin)", "Centre of the initial Gaussian bump."),
-                        param("width", KeyType::Float, "m", "0.1", "Standard deviation of the initial bump."),
-                        param("amplitude", KeyType::Float, "", "1.0", "Peak value of the initial bump.")});
+RYUSHI_REGISTER_SYSTEM(
+    PassiveScalarDiffusion, "passive_scalar_diffusion",
+    "Passive scalar `scalar` diffusing with the SPH (Morris) Laplacian; worked example of docs/extending.md.",
+    {param("diffusivity", KeyType::Float, "m^2/s", "", "Diffusivity kappa.", true),
+     param("centre", KeyType::Vector, "m", "(origin)", "Centre of the initial Gaussian bump."),
+     param("width", KeyType::Float, "m", "0.1", "Standard deviation of the initial bump."),
+     param("amplitude", KeyType::Float, "", "1.0", "Peak value of the initial bump.")});
 
 }  // namespace ryushi::example

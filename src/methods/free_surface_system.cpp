@@ -7,8 +7,8 @@
 // with `moment_matrix = true` also the tensor `moment_matrix` (M_i, the inverse of L_i).
 #include "ecs/io.hpp"
 #include "methods/system_registry.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
 #include "systems/free_surface/free_surface_detection.hpp"
+#include "systems/loops/for_each_particle.hpp"
 
 namespace ryushi {
 
@@ -55,7 +55,8 @@ class FreeSurfaceDetection final : public System<D> {
 
 namespace {
 KeySpec rule_key() {
-  KeySpec k{"rule", KeyType::String, "", "\"isph2\"", "marrone (eigenvalue + scan region), isph2 (marrone + det(M) < 0.6) or mps (n < beta n0)."};
+  KeySpec k{"rule", KeyType::String, "", "\"isph2\"",
+            "marrone (eigenvalue + scan region), isph2 (marrone + det(M) < 0.6) or mps (n < beta n0)."};
   k.choices = {"marrone", "isph2", "mps"};
   return k;
 }
@@ -68,12 +69,14 @@ KeySpec beta_key() {
 }
 KeySpec moments_key() {
   return {"moment_matrix", KeyType::Bool, "", "false",
-          "Also write the moment matrix M_i (the inverse of the correction matrix L_i) as the tensor `moment_matrix`."};
+          "Also write the moment matrix M_i (the inverse of the correction matrix L_i) as the tensor "
+          "`moment_matrix`."};
 }
 }  // namespace
 
 RYUSHI_REGISTER_SYSTEM(FreeSurfaceDetection, "free_surface_detection",
-                       "Flags free-surface fluid particles (`free_surface` = 1) and writes their outward unit normal (`surface_normal`).",
+                       "Flags free-surface fluid particles (`free_surface` = 1) and writes their outward "
+                       "unit normal (`surface_normal`).",
                        {rule_key(), beta_key(), moments_key()});
 
 }  // namespace ryushi

@@ -8,8 +8,8 @@
 // a [[solid]]'s prescribed velocity for a lid, a sliding plate or a moving body. The particles of
 // [[elastic]] bodies get the same rows: to the fluid they are walls that move.
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 
 namespace ryushi {
@@ -48,13 +48,16 @@ class AdamiWall final : public System<D> {
       if (!ghost.empty()) ghost[w] = sum_w > 0 ? Vec<D>(2 * v[w] - sum_v / sum_w) : v[w];
     };
     for_each_of_kind(kind, kWall, [&](std::size_t w) {
-      condition(w, [&](std::size_t i) { return acceleration.empty() ? p_.gravity : Vec<D>(p_.gravity - acceleration[i]); });
+      condition(w, [&](std::size_t i) {
+        return acceleration.empty() ? p_.gravity : Vec<D>(p_.gravity - acceleration[i]);
+      });
     });
     // An elastic body's particles are walls that move with the solid, felt with g alone: their
     // acceleration carries the body's elastic vibration (c_s ~ 150 m/s, 1e4 m/s^2), and taken
     // into the wall pressure it drove the water beside a gate to negative density at t = 0.044 s.
     if (p_.elastic_bodies)
-      for_each_of_kind(kind, kElastic, [&](std::size_t w) { condition(w, [&](std::size_t) { return p_.gravity; }); });
+      for_each_of_kind(kind, kElastic,
+                       [&](std::size_t w) { condition(w, [&](std::size_t) { return p_.gravity; }); });
   }
 
  private:

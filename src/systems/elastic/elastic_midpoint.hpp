@@ -33,7 +33,7 @@
 #include "ecs/io.hpp"
 #include "systems/elastic/elastic_model.hpp"
 #include "systems/elastic/elastic_parameters.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/domain.hpp"
 
 namespace ryushi {

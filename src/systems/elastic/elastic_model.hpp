@@ -10,7 +10,7 @@
 
 #include "ecs/io.hpp"
 #include "systems/elastic/elastic_parameters.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 
 namespace ryushi {
@@ -39,7 +39,8 @@ class ElasticModel {
 
 // Pi_ij (seed 002 eqs. 23-24) for an approaching pair (v_ij . x_ij < 0).
 template <int D>
-double solid_viscosity(const ElasticParameters<D>& p, double vx, double r2, double c, double rhoi, double rhoj) {
+double solid_viscosity(const ElasticParameters<D>& p, double vx, double r2, double c, double rhoi,
+                       double rhoj) {
   const double h = p.kernel.h(), mu = h * vx / (r2 + 0.01 * h * h);
   return (-p.alpha * c * mu + p.beta * mu * mu) / (0.5 * (rhoi + rhoj));
 }
@@ -48,9 +49,9 @@ double solid_viscosity(const ElasticParameters<D>& p, double vx, double r2, doub
 // speed c) to acc: a stiff spring (c^2 / d)(1 - r/d) along x_ij inside the spacing d, and the
 // artificial viscosity.
 template <int D, class Kinds, class Bodies, class Positions, class Velocities>
-void add_solid_contact(const ElasticParameters<D>& p, const NeighbourList& nl, std::size_t i, double c, double rho0,
-                       double rho, const Kinds& kind, const Bodies& body, const Positions& x, const Velocities& v,
-                       Vec<D>& acc, bool walls = true) {
+void add_solid_contact(const ElasticParameters<D>& p, const NeighbourList& nl, std::size_t i, double c,
+                       double rho0, double rho, const Kinds& kind, const Bodies& body, const Positions& x,
+                       const Velocities& v, Vec<D>& acc, bool walls = true) {
   const double d = p.spacing, volume = p.volume();
   for (auto j : nl.of(i)) {
     const bool wall = walls && kind[j] == kWall;
@@ -61,7 +62,8 @@ void add_solid_contact(const ElasticParameters<D>& p, const NeighbourList& nl, s
     const double r = std::sqrt(r2);
     acc += (c * c / d) * (1.0 - r / d) / r * xij;
     const double vx = (v[i] - v[j]).dot(xij);
-    if (vx < 0) acc -= rho0 * volume * solid_viscosity(p, vx, r2, c, rho, rho) * p.kernel.grad_factor(r) * xij;
+    if (vx < 0)
+      acc -= rho0 * volume * solid_viscosity(p, vx, r2, c, rho, rho) * p.kernel.grad_factor(r) * xij;
   }
 }
 

@@ -10,8 +10,8 @@
 
 #include "ecs/io.hpp"
 #include "systems/elastic/elastic_parameters.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 
 namespace ryushi {

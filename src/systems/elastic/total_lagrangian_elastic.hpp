@@ -32,7 +32,7 @@
 #include "ecs/outer_sum.hpp"
 #include "systems/elastic/elastic_model.hpp"
 #include "systems/elastic/elastic_parameters.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 
 namespace ryushi {

@@ -1,5 +1,6 @@
 #pragma once
-// Continuity equation with delta-SPH density diffusion (seed 002 eqs. 17-19):
+// Continuity equation with delta-SPH density diffusion (seed 002 eqs. 17-19), a pair term
+// (systems/loops/pair_loop.hpp):
 //   drho_i/dt = rho_i sum_j V_j (v_i - v_j) . grad_i W_ij + delta h c0 sum_j V_j psi_ij . grad_i W_ij
 //   psi_ij = 2 (rho_j - rho_i) (x_j - x_i) / |x_ij|^2 - (<grad rho>_i + <grad rho>_j)
 // The gradient pair enters as a sum: that subtracts the linear part of rho_j - rho_i (so a
@@ -7,48 +8,49 @@
 // conserving. (The seed prints a difference; with x_ij = x_i - x_j the sum is what follows
 // from Marrone et al. 2011.) Diffusion acts between fluid particles only; walls enter the
 // divergence term with their own (prescribed) velocity.
-#include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
-#include "systems/fluid/wcsph_parameters.hpp"
-#include "systems/neighbour/neighbour_list.hpp"
+#include <cstdint>
+#include <span>
+
+#include "ecs/component.hpp"
+#include "systems/loops/pair_loop.hpp"
 
 namespace ryushi {
 
-template <int D>
-class ContinuityDeltaSph final : public System<D> {
- public:
-  explicit ContinuityDeltaSph(const WcsphParameters<D>& p) : p_(p) {}
-  std::string name() const override { return p_.delta > 0 ? "continuity_delta_sph" : "continuity"; }
-  auto io() const {
-    return Io{reads(components::position, components::velocity, components::density, components::mass,
-                    components::kind, neighbours_resource),
-              writes(components::density_rate), optional(p_.delta > 0, reads(components::density_gradient))};
-  }
-  Access access() const override { return io().access(); }
-  void run(SystemContext<D>& ctx) override {
-    auto [x, v, rho, m, kind, nl, drho, grad] = io().fetch(ctx);
-    const bool periodic = p_.domain.any_periodic();
-    const double diffusion = p_.delta * p_.kernel.h() * p_.c0;
-    for_each_of_kind(kind, kFluid, [&](std::size_t i) {
-      double divergence = 0, diffusive = 0;
-      for (auto j : nl.of(i)) {
-        Vec<D> xij = periodic ? p_.domain.displacement(x[i], x[j]) : Vec<D>(x[i] - x[j]);
-        const double F = p_.kernel.grad_factor(std::sqrt(xij.squaredNorm()));
-        Vec<D> gradW = xij * F;
-        double Vj = m[j] / rho[j];
-        divergence += Vj * (v[i] - v[j]).dot(gradW);
-        if (diffusion > 0 && kind[j] == kFluid) {
-          // (x_j - x_i) . grad_i W_ij / r^2 = -F exactly, so no division per pair.
-          double pair = -2.0 * (rho[j] - rho[i]) * F;
-          diffusive += Vj * (pair - (grad[i] + grad[j]).dot(gradW));
-        }
-      }
-      drho[i] = rho[i] * divergence + diffusion * diffusive;
-    });
-  }
+template <int D, bool Diffusion>
+struct ContinuityDeltaSph {
+  struct Sum {
+    double divergence = 0, diffusive = 0;
+    Sum& operator+=(const Sum& o) {
+      divergence += o.divergence;
+      diffusive += o.diffusive;
+      return *this;
+    }
+  };
+  std::span<const double> V, rho;  // volumes m/rho, densities
+  std::span<const Vec<D>> grad;    // the renormalised density gradient (Diffusion only)
+  std::span<const std::int32_t> kind;
+  std::span<double> density_rate;
+  double diffusion;  // delta h c0
 
- private:
-  WcsphParameters<D> p_;
+  Sum zero() const { return {}; }
+  void operator()(const PairGeometry<D>& g, PairSides s, Sum& to_i, Sum& to_j) const {
+    // v_ij . grad_i W_ij is the same seen from j (both factors change sign).
+    const double t = g.vij.dot(g.gradW);
+    if (s.i) to_i.divergence += V[g.j] * t;
+    if (s.j) to_j.divergence += V[g.i] * t;
+    if constexpr (Diffusion) {
+      if (kind[g.i] == kFluid && kind[g.j] == kFluid) {
+        // (x_j - x_i) . grad_i W_ij / r^2 = -F exactly, so no division per pair; antisymmetric:
+        // what i gains, j loses (weighted by V).
+        const double psi = -2.0 * (rho[g.j] - rho[g.i]) * g.F - (grad[g.i] + grad[g.j]).dot(g.gradW);
+        if (s.i) to_i.diffusive += V[g.j] * psi;
+        if (s.j) to_j.diffusive -= V[g.i] * psi;
+      }
+    }
+  }
+  void store(std::size_t i, const Sum& sum) const {
+    density_rate[i] = rho[i] * sum.divergence + diffusion * sum.diffusive;
+  }
 };
 
 }  // namespace ryushi

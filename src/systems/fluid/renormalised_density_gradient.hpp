@@ -5,8 +5,8 @@
 // V_j = m_j / rho_j, including its documented fallback to the uncorrected gradient where L_i is
 // ill-conditioned (a splash).
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/operators/gradient.hpp"
 
 namespace ryushi {

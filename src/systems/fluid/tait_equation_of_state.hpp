@@ -1,8 +1,8 @@
 #pragma once
 // Tait equation of state p = B((rho/rho0)^gamma - 1) for fluid particles (seed 002 eq. 3).
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
 #include "systems/fluid/wcsph_parameters.hpp"
+#include "systems/loops/for_each_particle.hpp"
 
 namespace ryushi {
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
 #include "systems/kernels/kernel.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/domain.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 

@@ -20,8 +20,8 @@
 #include <cmath>
 
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
 #include "systems/heat/heat_parameters.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 
 namespace ryushi {

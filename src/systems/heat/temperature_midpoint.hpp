@@ -5,8 +5,8 @@
 //   T^{n+1}   = T^n + dt   dT/dt(n+1/2)    (TemperatureCorrector)
 // Fluid particles only: walls keep the temperature the scene gave them.
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
 #include "systems/heat/heat_parameters.hpp"
+#include "systems/loops/for_each_particle.hpp"
 
 namespace ryushi {
 

@@ -11,8 +11,8 @@
 // t^n, which keeps the scheme second order. Position and velocity of wall particles are the
 // walls' own (not integrated).
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
 #include "systems/heat/heat_parameters.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/domain.hpp"
 
 namespace ryushi {

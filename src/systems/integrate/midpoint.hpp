@@ -4,7 +4,7 @@
 //   phi^{n+1/2} = phi^n + dt/2 F(phi^n)        (MidpointPredictor, keeps phi^n)
 //   phi^{n+1}   = phi^n + dt   F(phi^{n+1/2})  (MidpointCorrector)
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/domain.hpp"
 
 namespace ryushi {

@@ -10,7 +10,7 @@
 #include <algorithm>
 
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/loops/for_each_particle.hpp"
 
 namespace ryushi {
 

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
 #include "systems/isph/isph_parameters.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/operators/gradient.hpp"
 #include "systems/operators/laplacian_choice.hpp"
@@ -56,7 +56,8 @@ class IsphPredictor final : public System<D> {
         // and SPH(2) rows at a free surface or a wall corner have negative ones, and a
         // viscosity-dominated flow (1e4 Pa s) blew up at any dt, 1/5 of the viscous limit
         // included: those rows use the standard weights.
-        if (p_.viscous_laplacian != LaplacianOrder::Standard && std::any_of(w.begin(), w.end(), [](double wk) { return wk < 0; }))
+        if (p_.viscous_laplacian != LaplacianOrder::Standard &&
+            std::any_of(w.begin(), w.end(), [](double wk) { return wk < 0; }))
           laplacian_weights_standard(stencil, w);
       }
       if (eulerian) gradient_weights_corrected(stencil, g);

@@ -24,9 +24,9 @@
 #include <vector>
 
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
 #include "systems/free_surface/free_surface_detection.hpp"
 #include "systems/isph/isph_parameters.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/mps/mps_parameters.hpp"  // components::pressure_gradient
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/operators/gradient.hpp"

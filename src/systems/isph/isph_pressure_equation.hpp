@@ -34,10 +34,10 @@
 #include <vector>
 
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
 #include "systems/free_surface/free_surface_detection.hpp"
 #include "systems/isph/compression_density.hpp"
 #include "systems/isph/isph_parameters.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/operators/gradient.hpp"
 #include "systems/operators/laplacian_choice.hpp"
@@ -87,7 +87,8 @@ class IsphPressureEquation final : public System<D> {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](auto range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         if (kind[i] == kFluid) {
-          unknown_[i] = !surface[i] || (p_.extrapolated_surface && moment_matrix(full_view, i).determinant() >= 0.2);
+          unknown_[i] =
+              !surface[i] || (p_.extrapolated_surface && moment_matrix(full_view, i).determinant() >= 0.2);
           if (!fixed.empty() && std::isfinite(fixed[i])) unknown_[i] = 0;  // [[fixed_pressure]]
         } else if (kind[i] == kWall && p_.wall_adami) {
           // Every wall particle a fluid particle's support reaches: the layers complete it.
@@ -158,7 +159,8 @@ class IsphPressureEquation final : public System<D> {
       }
     const std::size_t rows = sys.particle_of_row.size();
     std::size_t stride = 1;
-    for (std::size_t r = 0; r < rows; ++r) stride = std::max(stride, nl.of(sys.particle_of_row[r]).size() + 1);
+    for (std::size_t r = 0; r < rows; ++r)
+      stride = std::max(stride, nl.of(sys.particle_of_row[r]).size() + 1);
     cols_.resize(rows * stride);
     vals_.resize(rows * stride);
     counts_.assign(rows, 0);
@@ -172,7 +174,8 @@ class IsphPressureEquation final : public System<D> {
     const bool kept = keep_weights && kept_builds_ == full.builds && kept_rows_ == sys.particle_of_row;
     if (keep_weights && !kept) {
       kept_offset_.assign(rows + 1, 0);
-      for (std::size_t r = 0; r < rows; ++r) kept_offset_[r + 1] = kept_offset_[r] + nl.of(sys.particle_of_row[r]).size();
+      for (std::size_t r = 0; r < rows; ++r)
+        kept_offset_[r + 1] = kept_offset_[r] + nl.of(sys.particle_of_row[r]).size();
       kept_w_.assign(kept_offset_[rows], 0.0);
       kept_g_.assign(kept_offset_[rows], Vec<D>::Zero());
       kept_corrected_.assign(rows, 0);
@@ -214,8 +217,10 @@ class IsphPressureEquation final : public System<D> {
           for (std::size_t k = 0; k < nb.size(); ++k) {
             const double along = 0.5 * surface_normal[i].dot(gk[k]) / d;
             diagonal -= along;
-            if (row_of_[nb[k]] != kNoRow && along != 0) entries.emplace_back(row_of_[nb[k]], along);
-            else from_known -= along * known(nb[k]);
+            if (row_of_[nb[k]] != kNoRow && along != 0)
+              entries.emplace_back(row_of_[nb[k]], along);
+            else
+              from_known -= along * known(nb[k]);
           }
           rhs = 0;
         } else if (kind[i] == kFluid) {
@@ -244,8 +249,10 @@ class IsphPressureEquation final : public System<D> {
           }
           for (std::size_t k = 0; k < nb.size(); ++k) {
             diagonal += wk[k];
-            if (row_of_[nb[k]] != kNoRow && wk[k] != 0) entries.emplace_back(row_of_[nb[k]], -wk[k]);
-            else from_known += wk[k] * known(nb[k]);
+            if (row_of_[nb[k]] != kNoRow && wk[k] != 0)
+              entries.emplace_back(row_of_[nb[k]], -wk[k]);
+            else
+              from_known += wk[k] * known(nb[k]);
           }
           double div = 0;
           if (corrected) {
@@ -287,8 +294,10 @@ class IsphPressureEquation final : public System<D> {
               const double s = volume_[j] * p_.kernel.w(r.norm()) / total;
               lever -= s * r;
               lever_n -= s * normal[i].dot(r);
-              if (row_of_[j] != kNoRow && s != 0) entries.emplace_back(row_of_[j], -s / (h * h));
-              else from_known += s / (h * h) * known(j);
+              if (row_of_[j] != kNoRow && s != 0)
+                entries.emplace_back(row_of_[j], -s / (h * h));
+              else
+                from_known += s / (h * h) * known(j);
             }
           if (p_.wall_adami) {
             // Adami's wall pressure (seed 002 eq. 27): rho0 (g - a_w) . lever. Exact for a
@@ -306,8 +315,10 @@ class IsphPressureEquation final : public System<D> {
             const std::size_t j = nb[k];
             const double along = normal[i].dot(gk[k]) / h;
             diagonal -= along;
-            if (row_of_[j] != kNoRow && along != 0) entries.emplace_back(row_of_[j], along);
-            else from_known -= along * known(j);
+            if (row_of_[j] != kNoRow && along != 0)
+              entries.emplace_back(row_of_[j], along);
+            else
+              from_known -= along * known(j);
           }
           rhs = p_.rho0 / dt * (v_star_[i] - v[i]).dot(normal[i]) / h;
         }
@@ -341,7 +352,8 @@ class IsphPressureEquation final : public System<D> {
         sys.b[r] = rhs;
         for (int a = 0; a < D; ++a) sys.coordinates[r * D + a] = x[i][a];
       }
-      for (auto seen = bad_row_found.load(); bad_row < seen && !bad_row_found.compare_exchange_weak(seen, bad_row);) {
+      for (auto seen = bad_row_found.load();
+           bad_row < seen && !bad_row_found.compare_exchange_weak(seen, bad_row);) {
       }
     });
     if (bad_row_found != kNoRow) report_bad_row(kind, id, sys.particle_of_row[bad_row_found], x);
@@ -369,7 +381,8 @@ class IsphPressureEquation final : public System<D> {
     sys.symmetric = false;
     // The volumes are the left null vector of the standard (Morris) Laplacian of the fluid rows
     // only (not of the corrected one, nor of wall rows): the solve finds the exact source.
-    fix_pressure_gauge(sys, [&](std::size_t r) { return volume_[sys.particle_of_row[r]]; }, false);
+    fix_pressure_gauge(
+        sys, [&](std::size_t r) { return volume_[sys.particle_of_row[r]]; }, false);
   }
 
  private:
@@ -407,7 +420,8 @@ class IsphPressureEquation final : public System<D> {
     std::ostringstream m;
     m << (kind[i] == kFluid ? "fluid" : "wall") << " particle id " << id[i] << " at (";
     for (int a = 0; a < D; ++a) m << (a ? ", " : "") << x[i][a];
-    m << ") has a pressure row without a finite diagonal or right-hand side (a particle on top of another, or a "
+    m << ") has a pressure row without a finite diagonal or right-hand side (a particle on top of another, "
+         "or a "
          "non-finite velocity)";
     throw std::runtime_error(m.str());
   }

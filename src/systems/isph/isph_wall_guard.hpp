@@ -11,8 +11,8 @@
 #include <atomic>
 
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
 #include "systems/isph/isph_parameters.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 
 namespace ryushi {
@@ -24,7 +24,8 @@ inline constexpr Resource<std::size_t> wall_guard_events{"wall_guard_events"};
 template <int D>
 class IsphWallGuard final : public System<D> {
  public:
-  IsphWallGuard(const Domain<D>& domain, double min_distance) : domain_(domain), min_distance_(min_distance) {}
+  IsphWallGuard(const Domain<D>& domain, double min_distance)
+      : domain_(domain), min_distance_(min_distance) {}
   std::string name() const override { return "wall_guard"; }
   static constexpr auto io =
       Io{reads(components::kind, components::wall_normal, neighbours_resource),
@@ -43,7 +44,7 @@ class IsphWallGuard final : public System<D> {
         if (r < nearest) nearest = r, wall = j;
       }
       if (nearest == std::numeric_limits<double>::max()) return;
-      const Vec<D>& n = normal[wall];  // out of the fluid
+      const Vec<D>& n = normal[wall];                              // out of the fluid
       const double depth = -n.dot(domain_.offset(x[wall], x[i]));  // > 0 on the fluid side
       if (depth >= min_distance_) return;
       // Mirrored about the plane at min_distance, not put onto it: two particles coming in one

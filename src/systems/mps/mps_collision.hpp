@@ -11,7 +11,7 @@
 // is 0.62 l0 from the wall plane, and a fluid particle at rest (l0 from the wall) is untouched. Every
 // particle gathers from the velocities before the collision (no order dependence) and writes only itself.
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/mps/mps_parameters.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 

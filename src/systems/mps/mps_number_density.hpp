@@ -15,7 +15,7 @@
 // filter_neighbour_list gives, and the weights and sums are the ones computed before, bit for
 // bit.
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/mps/mps_pair_weights.hpp"
 #include "systems/mps/mps_parameters.hpp"
 #include "systems/neighbour/filter_rows.hpp"

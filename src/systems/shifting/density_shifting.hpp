@@ -23,9 +23,9 @@
 #include <vector>
 
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
 #include "systems/free_surface/free_surface_detection.hpp"
 #include "systems/kernels/lattice_kernel_sum.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/operators/gradient.hpp"
 #include "systems/shifting/shift_velocity.hpp"
@@ -54,7 +54,8 @@ double shifting_beta(const Kernel<D>& kernel, double d) {
 template <int D>
 class ShiftingDensity final : public System<D> {
  public:
-  explicit ShiftingDensity(const ShiftingParameters<D>& p) : p_(p), beta_(shifting_beta(p.kernel, p.spacing)) {}
+  explicit ShiftingDensity(const ShiftingParameters<D>& p)
+      : p_(p), beta_(shifting_beta(p.kernel, p.spacing)) {}
   std::string name() const override { return "shifting_density"; }
   static constexpr auto io =
       Io{reads(components::position, components::mass, components::kind, neighbours_resource),
@@ -101,7 +102,9 @@ class DensityShifting final : public System<D> {
       // A surface particle's numerical density is short by geometry (no fluid outside), not by
       // expansion: it counts as rho0. Read literally, eq. 23 pulled the surface of a resting
       // tank inwards (surface 0.5 d lower and the pressure 7% low after 2 s).
-      auto excess = [&](std::size_t j) { return kind[j] == kFluid && !surface[j] ? rho[j] / p_.rho0 - 1 : 0.0; };
+      auto excess = [&](std::size_t j) {
+        return kind[j] == kFluid && !surface[j] ? rho[j] / p_.rho0 - 1 : 0.0;
+      };
       const double excess_i = excess(i);
       for (auto j : nl.of(i)) {
         Vec<D> r = view.r(i, j);  // x_j - x_i

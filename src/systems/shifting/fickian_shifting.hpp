@@ -24,9 +24,9 @@
 #include <vector>
 
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
 #include "systems/free_surface/free_surface_detection.hpp"
 #include "systems/isph/isph_parameters.hpp"  // components::wall_normal
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/shifting/density_shifting.hpp"  // components::shift
 #include "systems/shifting/shift_velocity.hpp"
@@ -38,17 +38,18 @@ struct FickianShiftingParameters {
   Kernel<D> kernel{KernelType::CubicSpline, 1.0};
   Domain<D> domain;
   double spacing = 1;
-  double coefficient = 2.0;  // A (Skillen et al. 2013 recommend 1-6)
-  double clumping = 0.2;     // R of the anti-clumping term, exponent 4 (Lind 2012)
-  double max_shift = 0.2;    // cap, in spacings
-  bool complete_walls = false;  // one wall layer with normals (ISPH): see the loop below
+  double coefficient = 2.0;       // A (Skillen et al. 2013 recommend 1-6)
+  double clumping = 0.2;          // R of the anti-clumping term, exponent 4 (Lind 2012)
+  double max_shift = 0.2;         // cap, in spacings
+  bool complete_walls = false;    // one wall layer with normals (ISPH): see the loop below
   bool surface_vicinity = false;  // optimised (OPS): tangential only within a support of the surface
 };
 
 template <int D>
 class FickianShifting final : public System<D> {
  public:
-  explicit FickianShifting(const FickianShiftingParameters<D>& p) : p_(p), w_spacing_(p.kernel.w(p.spacing)) {}
+  explicit FickianShifting(const FickianShiftingParameters<D>& p)
+      : p_(p), w_spacing_(p.kernel.w(p.spacing)) {}
   std::string name() const override { return "particle_shifting"; }
   auto io() const {
     return Io{reads(components::mass, components::density, components::kind, components::free_surface,

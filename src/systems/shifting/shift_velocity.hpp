@@ -5,7 +5,7 @@
 // velocity field is carried exactly.
 #include <vector>
 
-#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/operators/gradient.hpp"
 
 namespace ryushi {

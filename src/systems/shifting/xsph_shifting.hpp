@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "ecs/io.hpp"
-#include "systems/fluid/for_each_fluid.hpp"
+#include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/shifting/density_shifting.hpp"  // components::shift
 #include "systems/shifting/shift_velocity.hpp"

@@ -19,17 +19,24 @@ namespace ryushi {
 // (a single block runs serially). Tests force both ways.
 enum class PairsOnce : int { Auto = -1, Never = 0, Always = 1 };
 
-// The block size for `nl`, or 0 to gather every pair instead: fewer than four blocks (a
-// periodic axis puts neighbours a box apart in index; the scene's first step, before the first
-// reorder, has walls a block apart from the fluid beside them) would leave cores idle.
-inline std::size_t pairs_once_block_size(const NeighbourList& nl, PairsOnce mode) {
-  const std::size_t N = nl.size();
+// The block size for the first `rows` rows of `nl` (the owned ones; pair_loop.hpp), or 0 to
+// gather every pair instead: fewer than four blocks (a periodic axis puts neighbours a box apart
+// in index; the scene's first step, before the first reorder, has walls a block apart from the
+// fluid beside them) would leave cores idle.
+inline std::size_t pairs_once_block_size(const NeighbourList& nl, PairsOnce mode, std::size_t rows) {
+  const std::size_t N = std::min(rows, nl.size());
   if (mode == PairsOnce::Never || N == 0) return 0;
   const std::size_t window = tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, N, 4096), std::size_t{0},
       [&](auto r, std::size_t w) {
-        for (std::size_t i = r.begin(); i != r.end(); ++i)
-          if (nl.count(i) > 0 && nl.of(i).back() > i) w = std::max<std::size_t>(w, nl.of(i).back() - i);
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          // Only the scatter to written rows needs the window: ghost rows (from `rows` on) are
+          // never written.
+          auto nb = nl.of(i);
+          auto end = N == nl.size() ? nb.end()
+                                    : std::lower_bound(nb.begin(), nb.end(), static_cast<std::uint32_t>(N));
+          if (end != nb.begin() && *(end - 1) > i) w = std::max<std::size_t>(w, *(end - 1) - i);
+        }
         return w;
       },
       [](std::size_t a, std::size_t b) { return std::max(a, b); });
