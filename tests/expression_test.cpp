@@ -1,7 +1,7 @@
-// Initial fields from expressions (scene/expression.hpp): the formulas' values, the errors a bad
+// Initial fields from expressions (functions/expression.hpp): the formulas' values, the errors a bad
 // formula gives, the values landing on the particles of every method, and a flow that only
 // expressions can set up, the Taylor-Green vortices, decaying at the analytic rate.
-#include "scene/expression.hpp"
+#include "functions/expression.hpp"
 
 #include <doctest/doctest.h>
 

@@ -1,6 +1,6 @@
 // Kernels: normalisation (radial Gauss-Legendre quadrature per piece, to 1e-6), gradient
 // against a central finite difference, compact support, continuity at the piece joints.
-#include "systems/kernels/kernel.hpp"
+#include "kernels/kernel.hpp"
 
 #include <doctest/doctest.h>
 
@@ -33,9 +33,12 @@ double integrate(F f, double a, double b, int panels = 64) {
 // Radii where the piecewise definition changes (in units of h).
 std::vector<double> joints(KernelType t) {
   switch (t) {
-    case KernelType::CubicSpline: return {1.0};
-    case KernelType::QuinticSpline: return {1.0, 2.0};
-    default: return {};
+    case KernelType::CubicSpline:
+      return {1.0};
+    case KernelType::QuinticSpline:
+      return {1.0, 2.0};
+    default:
+      return {};
   }
 }
 
@@ -44,7 +47,9 @@ void check_kernel(KernelType type) {
   const double h = 0.37;
   Kernel<D> k(type, h);
   const double R = k.support();
-  auto shell = [&](double r) { return k.w(r) * (D == 2 ? 2 * std::numbers::pi * r : 4 * std::numbers::pi * r * r); };
+  auto shell = [&](double r) {
+    return k.w(r) * (D == 2 ? 2 * std::numbers::pi * r : 4 * std::numbers::pi * r * r);
+  };
   // Integrate piece by piece so the quadrature never straddles a kink.
   std::vector<double> cuts{0.0};
   for (double j : joints(type)) cuts.push_back(j * h);
@@ -100,7 +105,8 @@ TEST_CASE("kernels: W(0) and W at the joints match the published formulas (2D an
       {KernelType::CubicSpline, 3, 0.0, 1 / (pi * h3)},
       {KernelType::CubicSpline, 3, h, 1 / (pi * h3) * 0.25},
       {KernelType::CubicSpline, 3, 1.5 * h, 1 / (pi * h3) * 0.25 * 0.125},
-      // quintic spline (Morris 1997): sigma ((3-q)^5 - 6 (2-q)^5 + 15 (1-q)^5), 7/(478 pi h^2), 1/(120 pi h^3)
+      // quintic spline (Morris 1997): sigma ((3-q)^5 - 6 (2-q)^5 + 15 (1-q)^5), 7/(478 pi h^2), 1/(120 pi
+      // h^3)
       {KernelType::QuinticSpline, 2, 0.0, 7 / (478 * pi * h2) * (243 - 6 * 32 + 15)},
       {KernelType::QuinticSpline, 2, h, 7 / (478 * pi * h2) * (32 - 6)},
       {KernelType::QuinticSpline, 2, 2 * h, 7 / (478 * pi * h2)},

@@ -128,3 +128,48 @@ TEST_CASE("method keys: a section or key another method owns is bad input there"
                           "pressure = 0.0\n")
             .find("[[fixed_pressure]] #0 is for method isph") != std::string::npos);
 }
+
+TEST_CASE(
+    "method keys: a key or value of [[section]] entries another method owns is bad input at the entry's "
+    "key") {
+  int at = 0;
+  // [[fluid]] depth (a shallow-water depth) in a WCSPH scene: at the key of the entry that has it.
+  const std::string fluid_depth = test::scene_error(with_line("wcsph", "", at), {"fluid.0.depth=0.3"});
+  INFO(fluid_depth);
+  CHECK(fluid_depth.find("--set fluid.0.depth=0.3: [[fluid]] #0 depth is for method swe") !=
+        std::string::npos);
+  // A probe type only the shallow water samples, under MPS: at the probe's type, naming the owner.
+  const std::string text =
+      with_line("mps", "", at) + "\n[[probe]]\nname = \"front\"\ntype = \"front_depth\"\n";
+  const std::string probe = test::scene_error(text);
+  INFO(probe);
+  const int line = static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+  CHECK(probe.find("bad.toml:" + std::to_string(line) + ":") == 0);
+  CHECK(probe.find("of type front_depth is for method swe") != std::string::npos);
+  // And what the shallow water refuses: a particle method's [[import]] and [[fluid]] pressure.
+  const std::string import = test::scene_error(with_line("swe", "", at) + "\n[[import]]\nfile = \"x.h5\"\n");
+  INFO(import);
+  CHECK(import.find("[[import]] #0 is for the particle methods, not swe") != std::string::npos);
+  const std::string pressure = test::scene_error(with_line("swe", "", at), {"fluid.0.pressure=0.0"});
+  INFO(pressure);
+  CHECK(pressure.find("--set fluid.0.pressure=0.0: [[fluid]] #0: pressure is for the particle methods") !=
+        std::string::npos);
+}
+
+TEST_CASE("method keys: a key a method removed is bad input at the key, naming what replaced it") {
+  // A method registered for this test only, as the One ISPH issue will retire ISPH keys.
+  MethodSpec spec;
+  spec.doc = "a method with a removed key";
+  spec.keys = {{"pressure_gradient", KeyType::String, "", "\"corrected\"", "The gradient."}};
+  spec.retired = {{"violent_flow", "use pressure_gradient = \"corrected\" (one set-up for every flow)"}};
+  REQUIRE(register_method_spec("retiring_example", spec));
+  int at = 0;
+  std::string text = with_line("wcsph", "", at, "conduction_2d.toml");  // [method] holds only its name
+  text.replace(text.find("name = \"wcsph\""), 14, "name = \"retiring_example\"\nviolent_flow = true");
+  const std::string error = test::scene_error(text);
+  unregister_method_spec("retiring_example");
+  INFO(error);
+  CHECK(error.find("bad.toml:" + std::to_string(at) +
+                   ":1: [method] violent_flow was removed from method "
+                   "retiring_example: use pressure_gradient = \"corrected\"") == 0);
+}

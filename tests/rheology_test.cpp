@@ -1,7 +1,7 @@
 // Non-Newtonian viscosity under WCSPH (issue 14; seed 001 eqs. 3-8; docs/multiphysics.md): the
 // models' apparent viscosity, and plane Poiseuille flows of power-law (n = 0.5, 1.5) and Bingham
 // fluids against their analytic steady profiles.
-#include "systems/rheology/rheology.hpp"
+#include "materials/rheology.hpp"
 
 #include <doctest/doctest.h>
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "functions/motion_table.hpp"
 #include "geometry/solid_shape.hpp"
-#include "scene/motion_table.hpp"
 #include "h5_read.hpp"
 #include "scene_error.hpp"
 #include "test_util.hpp"
@@ -51,7 +51,8 @@ std::size_t check_couette_drag(const std::filesystem::path& probes, double toler
   for (std::size_t k = 0; k < t.size(); ++k) {
     if (t[k] < 0.1 - 1e-9) continue;
     CAPTURE(t[k]);
-    CHECK(drag[k] / (-mu * U / H * L * couette_shear_ratio(t[k], H, nu)) == doctest::Approx(1.0).epsilon(tolerance));
+    CHECK(drag[k] / (-mu * U / H * L * couette_shear_ratio(t[k], H, nu)) ==
+          doctest::Approx(1.0).epsilon(tolerance));
     ++checked;
   }
   return checked;
@@ -345,17 +346,19 @@ TEST_CASE("solid: a piston wave maker makes the waves of linear wave-maker theor
 // a wall) the bisector there made pressure spikes of 20 kPa and the force swung by +-3 kN/m.
 TEST_CASE("solid: an ISPH piston wave maker makes the waves of linear wave-maker theory at h/d = 20") {
   auto dir = test::unique_scratch("wave_flume_isph");
-  auto r = test::run_command(bin() + " run " + test::scene_path("wave_flume_isph_2d.toml") + " --quiet --out " +
-                             dir.string() + " --set time.end=5");
+  auto r = test::run_command(bin() + " run " + test::scene_path("wave_flume_isph_2d.toml") +
+                             " --quiet --out " + dir.string() + " --set time.end=5");
   REQUIRE_MESSAGE(r.code == 0, r.output);
   auto csv = test::read_csv(dir / "probes.csv");
   for (const char* probe : {"eta_0.6m", "eta_1m"}) {
     CAPTURE(probe);
     auto heights = wave_heights(csv, probe);
-    MESSAGE(std::string(probe), ": heights over Biesel's in periods 2-4: ", heights[0], ", ", heights[1], ", ", heights[2]);
+    MESSAGE(std::string(probe), ": heights over Biesel's in periods 2-4: ", heights[0], ", ", heights[1],
+            ", ", heights[2]);
     for (double h : heights) CHECK(h == doctest::Approx(1.0).epsilon(0.10));
   }
-  MESSAGE("mean force on the paddle over t = 2-5 s: ", mean_paddle_force(csv), " N/m (hydrostatic thrust -196 N/m)");
+  MESSAGE("mean force on the paddle over t = 2-5 s: ", mean_paddle_force(csv),
+          " N/m (hydrostatic thrust -196 N/m)");
   CHECK(mean_paddle_force(csv) == doctest::Approx(-1000 * 9.81 * 0.2 * 0.2 / 2).epsilon(0.10));
 }
 
@@ -403,9 +406,9 @@ TEST_CASE(
             "[method]\nname = \"isph\"\n[[solid]]\nshape = \"box\"\nmin = [0.5, 0.5]\nmax = [0.6, 0.6]\n"
             "displacement = [\"t\", \"0\"]\n") ==
         "");  // a moving body under ISPH (its wall rows take the wall's velocity, eq. 17)
-  CHECK(test::scene_error(base +
-                          "[method]\nname = \"isph\"\ndescription = \"eulerian\"\n[[solid]]\nshape = \"box\"\n"
-                          "min = [0.5, 0.5]\nmax = [0.6, 0.6]\ndisplacement = [\"t\", \"0\"]\n") ==
+  CHECK(test::scene_error(
+            base + "[method]\nname = \"isph\"\ndescription = \"eulerian\"\n[[solid]]\nshape = \"box\"\n"
+                   "min = [0.5, 0.5]\nmax = [0.6, 0.6]\ndisplacement = [\"t\", \"0\"]\n") ==
         "bad.toml:25:16: [[solid]] #0 moves, but method isph with description = \"eulerian\" keeps every "
         "particle in place");
   test::write_text(dir / "in_body.csv", "x, y\n0.55, 0.55\n");
@@ -414,32 +417,6 @@ TEST_CASE(
                           "[[import]]\nfile = \"" +
                           (dir / "in_body.csv").string() + "\"\n") ==
         "bad.toml:23:8: [[import]] #0: a particle at (0.55, 0.55) lies in [[solid]] 'solid0'");
-}
-
-TEST_CASE("fluid shapes: a disc and a ball of fluid hold their area and volume in particles") {
-  auto dir = test::unique_scratch("fluid_shapes");
-  std::filesystem::create_directories(dir);
-  auto count = [&](const std::string& text) {
-    auto kind = test::read_dataset(test::initial_frame(dir, text), "kind").values;
-    return double(std::count(kind.begin(), kind.end(), 0.0));
-  };
-  // R = 10 d: the lattice points within R of the centre, pi R^2 / d^2 = 314.2 (measured 316).
-  const double disc = count(
-      "[scene]\ndimension = 2\n[domain]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n[particles]\n"
-      "spacing = 0.01\n[physics]\ngravity = [0.0, 0.0]\n[time]\nend = 0.1\n"
-      "[[fluid]]\nshape = \"cylinder\"\ncentre = [0.5, 0.5]\nradius = 0.1\n");
-  CHECK(std::abs(disc / (kPi * 100) - 1) < 0.02);
-  const double ball = count(
-      "[scene]\ndimension = 3\n[domain]\nmin = [0.0, 0.0, 0.0]\nmax = [1.0, 1.0, 1.0]\n"
-      "[particles]\nspacing = 0.02\n[physics]\ngravity = [0.0, 0.0, 0.0]\n[time]\nend = 0.1\n"
-      "[[fluid]]\nshape = \"sphere\"\ncentre = [0.5, 0.5, 0.5]\nradius = 0.2\n");
-  CHECK(std::abs(ball / (4.0 / 3 * kPi * 1000) - 1) < 0.02);  // 4,189; measured 4,224, as the STL sphere
-  CAPTURE(disc);
-  CAPTURE(ball);
-  CHECK(test::scene_error(
-            "[scene]\ndimension = 2\n[domain]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n[particles]\n"
-            "spacing = 0.01\n[time]\nend = 0.1\n[[fluid]]\nshape = \"cylinder\"\nradius = 0.1\n") ==
-        "bad.toml:10:1: [[fluid]] #0 (a cylinder) needs centre and radius");
 }
 
 // A table's acceleration (Adami's wall pressure takes it): the change of slope over one row

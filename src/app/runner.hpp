@@ -24,11 +24,11 @@
 #include "app/run.hpp"
 #include "app/run_files.hpp"
 #include "ecs/scheduler.hpp"
+#include "io/atomic_file.hpp"
 #include "io/json.hpp"
 #include "methods/method.hpp"
 #include "metrics/metrics.hpp"
 #include "scene/scene.hpp"
-#include "systems/io/atomic_file.hpp"
 #include "systems/io/checkpoint.hpp"
 #include "systems/io/hdf5_frame.hpp"
 #include "systems/io/xdmf.hpp"
@@ -62,6 +62,7 @@ class Runner {
     PipelineOptions po{opt_.dump_matrix_dir, opt_.dump_step};
     auto method = build_method<D>(scene_, world_, po);
     context_ = method.context;
+    for (const auto& q : scene_.probes) probes_.push_back(Probe{q.type, q.position, q.solid, q.axis});
     search_cell_ = method.search_cell;
     method_parameters_ = method.parameters;
     method_diagnostics_ = method.diagnostics;
@@ -305,7 +306,7 @@ class Runner {
     next_probe_ = (std::floor(time_ / scene_.probe_interval + 1e-9) + 1) * scene_.probe_interval;
     if (scene_.probes.empty()) return;
     Profiler::Scope t(profiler_, slot_probes_);
-    auto values = sample_probes<D>(scene_.probes, world_, context_);
+    auto values = sample_probes<D>(probes_, world_, context_);
     values.insert(values.begin(), time_);
     probe_rows_.push_back(std::move(values));
   }
@@ -344,8 +345,7 @@ class Runner {
   void write_summary(const std::string& status, const std::string& message);  // run_summary.hpp
 
   std::vector<std::pair<std::string, double>> metrics() const {
-    const double g = scene_.method == "swe" ? scene_.swe.gravity : scene_.gravity_magnitude();
-    return evaluate_metrics<D>(scene_, world_, probe_rows_, context_.rho0, g, time_);
+    return evaluate_metrics<D>(scene_, world_, probe_rows_, context_.rho0, context_.gravity_magnitude, time_);
   }
 
   static std::string fmt(double v) {
@@ -358,6 +358,7 @@ class Runner {
   const RunOptions& opt_;
   Profiler profiler_;
   MethodContext<D> context_;
+  std::vector<Probe> probes_;  // the scene's [[probe]] entries, as the probes sample them
   std::vector<std::pair<std::string, double>> method_parameters_;
   std::function<std::vector<std::pair<std::string, double>>(const World<D>&, const Resources&)>
       method_diagnostics_;

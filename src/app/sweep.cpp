@@ -1,25 +1,24 @@
-#include "app/plugins.hpp"
 #include "app/sweep.hpp"
 
 #include <fcntl.h>
 #include <spawn.h>
+#include <spdlog/spdlog.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#include <nlohmann/json.hpp>
-#include <spdlog/spdlog.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
 #include "app/exit_codes.hpp"
+#include "app/plugins.hpp"
+#include "io/atomic_file.hpp"
 #include "scene/scene.hpp"
-#include "systems/io/atomic_file.hpp"
 
 extern char** environ;
 
@@ -29,7 +28,8 @@ namespace fs = std::filesystem;
 
 std::pair<std::string, std::vector<std::string>> parse_vary(const std::string& vary) {
   auto eq = vary.find('=');
-  if (eq == std::string::npos || eq == 0) throw std::invalid_argument("--vary " + vary + ": expected section.key=v1,v2,...");
+  if (eq == std::string::npos || eq == 0)
+    throw std::invalid_argument("--vary " + vary + ": expected section.key=v1,v2,...");
   std::string key = vary.substr(0, eq), rest = vary.substr(eq + 1);
   std::vector<std::string> values;
   std::string current;
@@ -176,10 +176,12 @@ int run_sweep(const SweepOptions& o) {
     if (next >= runs.size()) return false;
     auto& r = runs[next++];
     fs::create_directories(r.dir);
-    std::vector<std::string> args{"run", o.scene, "--out", r.dir.string(), "--quiet", "--threads", std::to_string(o.threads)};
+    std::vector<std::string> args{
+        "run", o.scene, "--out", r.dir.string(), "--quiet", "--threads", std::to_string(o.threads)};
     for (auto& s : o.sets) args.insert(args.end(), {"--set", s});
     for (auto& p : o.plugins) args.insert(args.end(), {"--plugin", p});
-    for (std::size_t k = 0; k < keys.size(); ++k) args.insert(args.end(), {"--set", keys[k] + "=" + r.values[k]});
+    for (std::size_t k = 0; k < keys.size(); ++k)
+      args.insert(args.end(), {"--set", keys[k] + "=" + r.values[k]});
     active[spawn_run(self, args, r.dir / "log.txt")] = std::size_t(&r - runs.data());
     return true;
   };
@@ -195,10 +197,12 @@ int run_sweep(const SweepOptions& o) {
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     if (code != kExitDone) ++failed;
     if (!o.quiet)
-      spdlog::info("sweep: {} {} (exit {})", r.dir.filename().string(), code == kExitDone ? "done" : "FAILED", code);
+      spdlog::info("sweep: {} {} (exit {})", r.dir.filename().string(), code == kExitDone ? "done" : "FAILED",
+                   code);
     start_next();
   }
-  if (!o.quiet && kept) spdlog::info("sweep: {} of {} runs were already complete and kept", kept, runs.size());
+  if (!o.quiet && kept)
+    spdlog::info("sweep: {} of {} runs were already complete and kept", kept, runs.size());
 
   // sweep.csv: one row per run.
   std::vector<nlohmann::json> summaries, profiles;
@@ -226,15 +230,20 @@ int run_sweep(const SweepOptions& o) {
     csv << runs[i].dir.filename().string() << ",";
     if (!s.is_object()) {
       csv << "missing,,,,";
-      for (std::size_t k = 0; k < metric_names.size() + diag_names.size() + system_names.size(); ++k) csv << ",";
+      for (std::size_t k = 0; k < metric_names.size() + diag_names.size() + system_names.size(); ++k)
+        csv << ",";
       csv << "\n";
       continue;
     }
-    csv << csv_field(s.value("status", nlohmann::json())) << "," << csv_field(s.value("wall_time_s", nlohmann::json()))
-        << "," << csv_field(s.value("steps", nlohmann::json())) << "," << csv_field(s.value("particles", nlohmann::json()))
-        << "," << csv_field(s.value("particle_steps_per_second", nlohmann::json()));
-    for (auto& m : metric_names) csv << "," << (s.contains("metrics") ? csv_field(s["metrics"].value(m, nlohmann::json())) : "");
-    for (auto& d : diag_names) csv << "," << (s.contains("diagnostics") ? csv_field(s["diagnostics"].value(d, nlohmann::json())) : "");
+    csv << csv_field(s.value("status", nlohmann::json())) << ","
+        << csv_field(s.value("wall_time_s", nlohmann::json())) << ","
+        << csv_field(s.value("steps", nlohmann::json())) << ","
+        << csv_field(s.value("particles", nlohmann::json())) << ","
+        << csv_field(s.value("particle_steps_per_second", nlohmann::json()));
+    for (auto& m : metric_names)
+      csv << "," << (s.contains("metrics") ? csv_field(s["metrics"].value(m, nlohmann::json())) : "");
+    for (auto& d : diag_names)
+      csv << "," << (s.contains("diagnostics") ? csv_field(s["diagnostics"].value(d, nlohmann::json())) : "");
     for (auto& name : system_names) {
       std::string share;
       if (profiles[i].is_object())
@@ -257,8 +266,12 @@ int run_sweep(const SweepOptions& o) {
   for (auto& k : keys) cmd += " --key '" + k + "'";
   if (!o.error.empty()) cmd += " --error '" + o.error + "'";
   if (std::system((cmd + (o.quiet ? " > /dev/null 2>&1" : "")).c_str()) != 0)
-    std::fprintf(stderr, "ryushi sweep: no sweep.png (needs Debian's python3-matplotlib: `make py-deps`, and an error column)\n");
-  if (!o.quiet) std::printf("sweep: %zu runs, %zu failed -> %s\n", runs.size(), failed, (out / "sweep.csv").string().c_str());
+    std::fprintf(stderr,
+                 "ryushi sweep: no sweep.png (needs Debian's python3-matplotlib: `make py-deps`, and an "
+                 "error column)\n");
+  if (!o.quiet)
+    std::printf("sweep: %zu runs, %zu failed -> %s\n", runs.size(), failed,
+                (out / "sweep.csv").string().c_str());
   return failed ? kExitNumericalFailure : kExitDone;
 }
 

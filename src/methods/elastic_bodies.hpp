@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "ecs/lattice.hpp"
+#include "ecs/world.hpp"
 #include "methods/method_context.hpp"
 #include "scene/block_fields.hpp"
 #include "scene/scene.hpp"

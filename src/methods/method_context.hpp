@@ -1,27 +1,10 @@
 #pragma once
-// What a method tells the driver and the systems it runs, whatever the method: the scene's
-// kernel, spacing, domain, gravity and material. Systems registered by name ([[systems]]) are
-// built from it, so one extension runs under WCSPH, MPS and every method registered later.
-#include <string>
-
-#include "ecs/math.hpp"
+// The method context (systems/method_context.hpp) filled from a scene: the scene's kernel,
+// spacing, domain, gravity and material; a method sets how its solid forces are read.
 #include "scene/scene.hpp"
-#include "systems/kernels/kernel.hpp"
-#include "systems/neighbour/domain.hpp"
+#include "systems/method_context.hpp"
 
 namespace ryushi {
-
-template <int D>
-struct MethodContext {
-  static constexpr int dimension = D;
-  std::string method;                              // [method] name
-  Kernel<D> kernel{KernelType::WendlandC2, 1.0};   // the method's kernel (MPS: its weight, h = r_e)
-  Domain<D> domain;
-  Vec<D> gravity = Vec<D>::Zero();
-  double spacing = 1;    // initial particle spacing d (MPS: l0), m
-  double rho0 = 1000;    // reference density, kg/m^3
-  double viscosity = 0;  // dynamic viscosity mu, Pa s
-};
 
 template <int D>
 Vec<D> scene_vector(const std::vector<double>& v) {
@@ -47,6 +30,7 @@ MethodContext<D> method_context(const Scene& s, const Kernel<D>& kernel) {
   c.kernel = kernel;
   c.domain = scene_domain<D>(s);
   c.gravity = scene_vector<D>(s.gravity);
+  c.gravity_magnitude = s.gravity_magnitude();
   c.spacing = s.spacing;
   c.rho0 = s.density;
   c.viscosity = s.viscosity;

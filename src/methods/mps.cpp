@@ -26,6 +26,7 @@
 #include "systems/mps/mps_pressure_correction.hpp"
 #include "systems/mps/mps_pressure_equation.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
+#include "systems/operators/mps_reference.hpp"
 #include "systems/pressure/linear_solve.hpp"
 #include "systems/pressure/preconditioner_setup.hpp"
 #include "systems/pressure/pressure_system_dump.hpp"
@@ -45,7 +46,8 @@ MpsParameters<D> mps_parameters(const Scene& s) {
   p.nu = s.viscosity / s.density;
   p.surface_threshold = s.method_params.number("surface_threshold");
   p.relaxation = s.method_params.number("source_relaxation");
-  if (s.method_params.text("source_density") == "smooth") p.set_source_kernel(s.method_params.number("source_support"));
+  if (s.method_params.text("source_density") == "smooth")
+    p.set_source_kernel(s.method_params.number("source_support"));
   p.clamp_negative_pressure = s.method_params.flag("clamp_negative_pressure");
   p.cfl = s.cfl;
   double u = std::sqrt(2.0 * s.gravity_magnitude() * s.fluid_height());
@@ -58,7 +60,8 @@ MpsParameters<D> mps_parameters(const Scene& s) {
 // |u*| dt stays below 1.25 cfl l0 and two particles close in by less than the 2.5 cfl l0 skin.
 template <int D>
 VelocityTimeStep<D> mps_time_step(const MpsParameters<D>& p) {
-  return VelocityTimeStep<D>(p.cfl, p.spacing, p.reference_speed, p.nu > 0 ? 0.2 * p.spacing * p.spacing / p.nu : 0.0);
+  return VelocityTimeStep<D>(p.cfl, p.spacing, p.reference_speed,
+                             p.nu > 0 ? 0.2 * p.spacing * p.spacing / p.nu : 0.0);
 }
 
 template <int D>
@@ -68,7 +71,9 @@ void populate_mps_world(const Scene& s, const MpsParameters<D>& p, World<D>& wor
   const auto appended = append_scene_particles<D>(
       s, p.rho0, world,
       [&](double depth, double given) {
-        return std::pair{p.rho0, !std::isnan(given) ? given : s.method_params.flag("hydrostatic_init") ? p.rho0 * g_up * depth : 0.0};
+        return std::pair{p.rho0, !std::isnan(given)                         ? given
+                                 : s.method_params.flag("hydrostatic_init") ? p.rho0 * g_up * depth
+                                                                            : 0.0};
       },
       [&](int layer) { return layer <= s.method_params.integer("wall_pressure_layers") ? kWall : kDummy; });
   add_surface_elements(s, appended, world);
@@ -102,6 +107,10 @@ MethodSetup<D> build_mps(const Scene& s, World<D>& world, const PipelineOptions&
   populate_mps_world<D>(s, p, world);
   MethodSetup<D> m;
   m.context = method_context<D>(s, p.weight);
+  {  // the force probe's wall shear as MPS's Laplacian writes the viscous term
+    const auto ref = mps_reference(m.context.kernel, m.context.spacing);
+    m.context.wall_layer_viscous = m.context.viscosity / m.context.rho0 * 2.0 * D / (ref.lambda0 * ref.n0);
+  }
   m.pipeline = mps_pipeline<D>(s, p);
   m.first_dt = mps_time_step<D>(p).limit(0.0);
   m.density_may_vanish = true;

@@ -175,6 +175,7 @@ MethodSetup<D> build_swe(const Scene& s, World<D>& world, const PipelineOptions&
     MethodSetup<D> m_;
     const Kernel<2> kernel(KernelType::Spiky, balance.influence_radius);
     m_.context = method_context<D>(s, kernel);
+    m_.context.gravity_magnitude = s.swe.gravity;  // along -z, out of the plan view
     m_.pipeline = {
         std::make_shared<SweInfluenceRadius<D>>(p.alpha_e),
         std::make_shared<SweGhostWalls<D>>(p.walls, p.slip, kernel.support_factor()),

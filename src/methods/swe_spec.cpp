@@ -27,6 +27,23 @@ void resolve(Scene& sc, const toml::table& root, Validator& val) {
     val.fail(root["physics"]["gravity"].node(), "physics.gravity",
              "method 'swe' has no in-plane gravity: set [swe] gravity (along -z) and the bed's slope in "
              "[[bed_ramp]] or [bed]");
+  sc.gravity.assign(sc.dimension, 0.0);
+  // A fluid block is a depth over the plan; the particle methods' bodies and fields are not.
+  if (const auto* blocks = root["fluid"].as_array())
+    for (std::size_t i = 0; i < blocks->size(); ++i) {
+      const std::string label = "[[fluid]] #" + std::to_string(i);
+      if (root["fluid"][i]["pressure"])
+        val.fail_entry(root, "fluid", i, "pressure",
+                       label + ": pressure is for the particle methods (swe sets depth)");
+      if (bool(root["fluid"][i]["depth"]) == bool(root["fluid"][i]["surface_elevation"]))
+        val.fail_entry(root, "fluid", i, "depth",
+                       label + ": method swe needs one of depth and surface_elevation");
+    }
+  if (root["import"])
+    val.fail_entry(root, "import", 0, "file", "[[import]] #0 is for the particle methods, not swe");
+  if (root["solid"])
+    val.fail_entry(root, "solid", 0, "shape",
+                   "[[solid]] #0 is for the particle methods, not swe (its walls are [[wall]] mirror lines)");
 }
 
 }  // namespace
@@ -36,11 +53,21 @@ MethodSpec swe_spec() {
   spec.doc =
       "shallow-water MPS in the plan view with dynamic particle splitting (Saigo & Koshizuka; [swe], [bed], "
       "[splitting]; docs/swe.md)";
-  spec.owns = {"swe", "bed", "bed_hump", "bed_ramp", "splitting"};
+  spec.owns = {"swe",
+               "bed",
+               "bed_hump",
+               "bed_ramp",
+               "splitting",
+               "fluid.depth",
+               "fluid.surface_elevation",
+               "probe.type=front_depth",
+               "metric.type=ritter_depth"};
   spec.hooks.kernel = [](int) { return std::string("spiky"); };
   spec.hooks.smoothing_ratio = [](const Scene& sc) { return sc.swe.influence_ratio; };
   spec.hooks.cfl = 0.5;
+  spec.hooks.read_sections = read_swe_sections;
   spec.hooks.resolve = resolve;
+  spec.hooks.walls_hold_particles = false;
   return spec;
 }
 

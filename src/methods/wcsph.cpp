@@ -6,30 +6,29 @@
 #include <cmath>
 #include <cstdio>
 
+#include "methods/elastic_bodies.hpp"
 #include "methods/isph2_surface_detection.hpp"
 #include "methods/method.hpp"
-#include "methods/wcsph_spec.hpp"
-
-#include "methods/elastic_bodies.hpp"
 #include "methods/scene_particles.hpp"
 #include "methods/thermal_state.hpp"
-#include "systems/fluid/wcsph_parameters.hpp"
+#include "methods/wcsph_spec.hpp"
 #include "systems/boundary/adami_wall.hpp"
-#include "systems/fluid/renormalised_density_gradient.hpp"
-#include "systems/fluid/tait_equation_of_state.hpp"
-#include "systems/fluid/wcsph_pair_forces.hpp"
-#include "systems/heat/heat_conduction.hpp"
-#include "systems/heat/temperature_midpoint.hpp"
-#include "systems/rheology/apparent_viscosity.hpp"
 #include "systems/elastic/elastic_midpoint.hpp"
 #include "systems/elastic/fluid_on_solid.hpp"
 #include "systems/elastic/total_lagrangian_elastic.hpp"
 #include "systems/elastic/updated_lagrangian_elastic.hpp"
+#include "systems/fluid/renormalised_density_gradient.hpp"
+#include "systems/fluid/tait_equation_of_state.hpp"
+#include "systems/fluid/wcsph_pair_forces.hpp"
+#include "systems/fluid/wcsph_parameters.hpp"
 #include "systems/fluid/xsph_velocity_smoothing.hpp"
+#include "systems/heat/heat_conduction.hpp"
+#include "systems/heat/temperature_midpoint.hpp"
 #include "systems/integrate/leapfrog.hpp"
 #include "systems/integrate/midpoint.hpp"
 #include "systems/integrate/time_step.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
+#include "systems/rheology/apparent_viscosity.hpp"
 #include "systems/shifting/fickian_shifting.hpp"
 #include "systems/shifting/xsph_shifting.hpp"
 
@@ -52,11 +51,14 @@ WcsphParameters<D> wcsph_parameters(const Scene& s) {
   p.beta = s.method_params.number("artificial_viscosity_quadratic");
   p.mu = s.viscosity;
   p.wall_no_slip = !s.method_params.flag("wall_slip");
-  p.wall_acceleration = std::any_of(s.solids.begin(), s.solids.end(), [](const SolidSpec& b) { return b.moves(); });
+  p.wall_acceleration =
+      std::any_of(s.solids.begin(), s.solids.end(), [](const SolidSpec& b) { return b.moves(); });
   p.variable_viscosity = s.rheology.shear_dependent() || s.rheology.temperature_dependent();
   p.elastic_bodies = !s.elastic.empty();
   // With solid substeps the step keeps N times the solid's limit: its sound speed over N.
-  for (auto& e : s.elastic) p.solid_sound_speed = std::max(p.solid_sound_speed, e.sound_speed() / s.method_params.integer("solid_substeps"));
+  for (auto& e : s.elastic)
+    p.solid_sound_speed =
+        std::max(p.solid_sound_speed, e.sound_speed() / s.method_params.integer("solid_substeps"));
   return p;
 }
 
@@ -96,7 +98,9 @@ void populate_world(const Scene& s, const WcsphParameters<D>& p, World<D>& world
   auto appended = append_scene_particles<D>(
       s, p.rho0, world,
       [&](double depth, double given) {
-        double rho = p.density(!std::isnan(given) ? given : s.method_params.flag("hydrostatic_init") ? p.rho0 * g_up * depth : 0.0);
+        double rho = p.density(!std::isnan(given)                         ? given
+                               : s.method_params.flag("hydrostatic_init") ? p.rho0 * g_up * depth
+                                                                          : 0.0);
         return std::pair{rho, p.pressure(rho)};
       },
       [](int) { return kWall; });
@@ -111,7 +115,8 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
   const auto& kinds = world.column(components::kind);
   const bool has_fluid = std::find(kinds.begin(), kinds.end(), kFluid) != kinds.end();
   const bool has_walls = std::find(kinds.begin(), kinds.end(), kWall) != kinds.end();
-  auto neighbours = std::make_shared<NeighbourSearch<D>>(p.kernel.support(), kWall, s.neighbour_skin * s.spacing);
+  auto neighbours =
+      std::make_shared<NeighbourSearch<D>>(p.kernel.support(), kWall, s.neighbour_skin * s.spacing);
   auto wall = std::make_shared<AdamiWall<D>>(p);
   auto gradient = std::make_shared<RenormalisedDensityGradient<D>>(p);
   auto forces = std::make_shared<WcsphPairForces<D>>(p);
@@ -178,9 +183,9 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
     // carried to the shifted place (Taylor); the density is not (delta-SPH's diffusion smooths
     // it; a correction is not measured yet).
     list.push_back(isph2_surface_detection<D>(method_context<D>(s, p.kernel)));
-    list.push_back(std::make_shared<FickianShifting<D>>(FickianShiftingParameters<D>{
-        p.kernel, p.domain, p.spacing, s.fickian_coefficient, s.anti_clumping, s.max_shift, false,
-        s.shifting_model == "optimised"}));
+    list.push_back(std::make_shared<FickianShifting<D>>(
+        FickianShiftingParameters<D>{p.kernel, p.domain, p.spacing, s.fickian_coefficient, s.anti_clumping,
+                                     s.max_shift, false, s.shifting_model == "optimised"}));
   }
   if (s.fixed_dt <= 0) list.push_back(std::make_shared<TimeStepControl<D>>(step_control<D>(s, p)));
   return list;
@@ -194,11 +199,13 @@ MethodSetup<D> build_wcsph(const Scene& s, World<D>& world, const PipelineOption
   if (p.variable_viscosity) p.mu = viscosity_at_rest<D>(s, world);
   MethodSetup<D> m;
   m.context = method_context<D>(s, p.kernel);
+  m.context.solid_force = SolidForceReading::PairReaction;  // the reaction to wcsph_pair_forces
   m.pipeline = wcsph_pipeline<D>(s, p, world);
   m.first_dt = step_control<D>(s, p).limit(0.0, p.gravity.norm());
   if (s.models_heat()) m.frame_fields.push_back("temperature");
   if (p.variable_viscosity) m.frame_fields.insert(m.frame_fields.end(), {"viscosity", "shear_rate"});
-  if (!s.elastic.empty()) m.frame_fields.insert(m.frame_fields.end(), {"stress", "displacement", "solid_pressure", "elastic_body"});
+  if (!s.elastic.empty())
+    m.frame_fields.insert(m.frame_fields.end(), {"stress", "displacement", "solid_pressure", "elastic_body"});
   char b[96];
   std::snprintf(b, sizeof b, "h = %.4g m, c0 = %.4g m/s", p.kernel.h(), p.c0);
   m.summary = b;

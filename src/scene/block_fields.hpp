@@ -1,12 +1,12 @@
 #pragma once
 // The initial fields of one [[fluid]] block, evaluated at a particle: its numbers and its
-// compiled formulas (scene/expression.hpp). A formula that gives a value that is not finite
+// compiled formulas (functions/expression.hpp). A formula that gives a value that is not finite
 // is bad input: SceneError naming the key's place, the block and the particle's position.
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "scene/expression.hpp"
+#include "functions/expression.hpp"
 #include "scene/scene.hpp"
 
 namespace ryushi {

@@ -1,55 +1,63 @@
 // [[probe]] and [[metric]]: what a run measures and the references its errors are taken against.
+#include <spdlog/spdlog.h>
+
 #include <cmath>
 #include <filesystem>
 #include <sstream>
 #include <tuple>
 
-#include <spdlog/spdlog.h>
-
 #include "scene/load_common.hpp"
 #include "scene/load_parts.hpp"
-#include "scene/validator.hpp"
 #include "scene/reference_table.hpp"
+#include "scene/validator.hpp"
 
 namespace ryushi {
 
 void load_measurements(toml::table& root, Validator& val, Scene& sc) {
   const std::string& path = sc.path;
   const int D = sc.dimension;
-  const bool swe = sc.method == "swe";
   const SceneEntries at{root, sc};
   if (auto* arr = root["probe"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
-      ProbeSpec p{*root["probe"][i]["name"].value<std::string>(), *root["probe"][i]["type"].value<std::string>(), {}};
+      ProbeSpec p{
+          *root["probe"][i]["name"].value<std::string>(), *root["probe"][i]["type"].value<std::string>(), {}};
       if (auto* pos = at.where("probe", i, "position")) p.position = vec_of(*pos);
-      if ((p.type == "pressure" || p.type == "water_height" || p.type == "solid_displacement" || p.type == "solid_stress") &&
+      if ((p.type == "pressure" || p.type == "water_height" || p.type == "solid_displacement" ||
+           p.type == "solid_stress") &&
           p.position.empty())
-        val.fail(&(*arr)[i], path_of("probe", i, "position"), "[[probe]] '" + p.name + "' of type " + p.type + " needs a position");
+        val.fail(&(*arr)[i], path_of("probe", i, "position"),
+                 "[[probe]] '" + p.name + "' of type " + p.type + " needs a position");
       if (!p.position.empty() && !at.inside(p.position, p.position))
-        val.fail(at.where("probe", i, "position"), path_of("probe", i, "position"), "[[probe]] '" + p.name + "' lies outside the domain");
+        val.fail(at.where("probe", i, "position"), path_of("probe", i, "position"),
+                 "[[probe]] '" + p.name + "' lies outside the domain");
       if (p.type == "force") {
         auto solid_name = root["probe"][i]["solid"].value<std::string>();
         if (!solid_name)
-          val.fail(&(*arr)[i], path_of("probe", i, "solid"), "[[probe]] '" + p.name + "' of type force needs `solid`, the name of a [[solid]]");
+          val.fail(&(*arr)[i], path_of("probe", i, "solid"),
+                   "[[probe]] '" + p.name + "' of type force needs `solid`, the name of a [[solid]]");
         for (std::size_t k = 0; k < sc.solids.size(); ++k)
           if (sc.solids[k].name == *solid_name) p.solid = static_cast<int>(k);
         if (p.solid < 0)
-          val.fail(at.where("probe", i, "solid"), path_of("probe", i, "solid"), "[[probe]] '" + p.name + "': there is no [[solid]] named '" + *solid_name + "'");
+          val.fail(at.where("probe", i, "solid"), path_of("probe", i, "solid"),
+                   "[[probe]] '" + p.name + "': there is no [[solid]] named '" + *solid_name + "'");
         p.axis = static_cast<int>(*root["probe"][i]["axis"].value<long long>());
         if (p.axis >= D)
-          val.fail(at.where("probe", i, "axis"), path_of("probe", i, "axis"), "[[probe]] '" + p.name + "': axis must be below the dimension");
+          val.fail(at.where("probe", i, "axis"), path_of("probe", i, "axis"),
+                   "[[probe]] '" + p.name + "': axis must be below the dimension");
       }
       if (p.type == "solid_displacement" || p.type == "solid_stress") {
         p.axis = static_cast<int>(*root["probe"][i]["axis"].value<long long>());
         if (p.axis >= D)
-          val.fail(at.where("probe", i, "axis"), path_of("probe", i, "axis"), "[[probe]] '" + p.name + "': axis must be below the dimension");
+          val.fail(at.where("probe", i, "axis"), path_of("probe", i, "axis"),
+                   "[[probe]] '" + p.name + "': axis must be below the dimension");
       }
       if (p.type.rfind("solid_", 0) == 0 && !root["elastic"])
-        val.fail(at.where("probe", i, "type"), path_of("probe", i, "type"), "[[probe]] '" + p.name + "': " + p.type + " needs an [[elastic]] body");
-      if (p.type == "front_depth" && !swe)
-        val.fail(at.where("probe", i, "type"), path_of("probe", i, "type"), "[[probe]] '" + p.name + "': front_depth is for method swe");
+        val.fail(at.where("probe", i, "type"), path_of("probe", i, "type"),
+                 "[[probe]] '" + p.name + "': " + p.type + " needs an [[elastic]] body");
       for (auto& q : sc.probes)
-        if (q.name == p.name) val.fail(at.where("probe", i, "name"), path_of("probe", i, "name"), "two probes are named '" + p.name + "'");
+        if (q.name == p.name)
+          val.fail(at.where("probe", i, "name"), path_of("probe", i, "name"),
+                   "two probes are named '" + p.name + "'");
       sc.probes.push_back(std::move(p));
     }
   }
@@ -69,7 +77,9 @@ void load_measurements(toml::table& root, Validator& val, Scene& sc) {
       spec.max_shift = *m["max_shift"].value<double>();
       spec.t_max = *m["t_max"].value<double>();
       for (auto& q : sc.metrics)
-        if (q.name == spec.name) val.fail(at.where("metric", i, "name"), path_of("metric", i, "name"), "two metrics are named '" + spec.name + "'");
+        if (q.name == spec.name)
+          val.fail(at.where("metric", i, "name"), path_of("metric", i, "name"),
+                   "two metrics are named '" + spec.name + "'");
       if (spec.type == "dam_break_front" && spec.probe.empty())
         for (auto& p : sc.probes)
           if (p.type == "surge_front") {
@@ -82,8 +92,8 @@ void load_measurements(toml::table& root, Validator& val, Scene& sc) {
             spec.probe = p.name;
             break;
           }
-      const bool reads_probe =
-          spec.type == "dam_break_front" || spec.type == "probe_csv" || spec.type == "rotating_square_pressure";
+      const bool reads_probe = spec.type == "dam_break_front" || spec.type == "probe_csv" ||
+                               spec.type == "rotating_square_pressure";
       if (reads_probe) {
         const ProbeSpec* probe = nullptr;
         for (auto& p : sc.probes)
@@ -96,18 +106,22 @@ void load_measurements(toml::table& root, Validator& val, Scene& sc) {
                                                                   : " named by its `probe` key") +
                        (spec.probe.empty() ? "" : "; there is no probe '" + spec.probe + "'"));
         if (spec.type == "rotating_square_pressure" && probe->type != "pressure")
-          val.fail(at.where("metric", i, "probe"), path_of("metric", i, "probe"), "[[metric]] '" + spec.name + "': probe '" + spec.probe + "' is not a pressure probe");
+          val.fail(at.where("metric", i, "probe"), path_of("metric", i, "probe"),
+                   "[[metric]] '" + spec.name + "': probe '" + spec.probe + "' is not a pressure probe");
         if (spec.type == "dam_break_front" && probe->type != "surge_front")
-          val.fail(at.where("metric", i, "probe"), path_of("metric", i, "probe"), "[[metric]] '" + spec.name + "': probe '" + spec.probe + "' is not a surge_front");
+          val.fail(at.where("metric", i, "probe"), path_of("metric", i, "probe"),
+                   "[[metric]] '" + spec.name + "': probe '" + spec.probe + "' is not a surge_front");
       }
       if (auto r = m["reference"].value<std::string>()) {
         auto file = std::filesystem::path(*r);
         if (file.is_relative()) file = std::filesystem::path(path).parent_path() / file;
         spec.reference = file.string();
       } else if (spec.type == "dam_break_front") {
-        spec.reference = (std::filesystem::path(RYUSHI_TOOLS_DIR) / "reference" / "martin_moyce_1952_n2_2.csv").string();
+        spec.reference =
+            (std::filesystem::path(RYUSHI_TOOLS_DIR) / "reference" / "martin_moyce_1952_n2_2.csv").string();
       } else if (spec.type == "probe_csv") {
-        val.fail(&(*arr)[i], path_of("metric", i, "reference"), "[[metric]] '" + spec.name + "' of type probe_csv needs a reference CSV");
+        val.fail(&(*arr)[i], path_of("metric", i, "reference"),
+                 "[[metric]] '" + spec.name + "' of type probe_csv needs a reference CSV");
       }
       if (!spec.reference.empty()) {
         try {
@@ -122,7 +136,8 @@ void load_measurements(toml::table& root, Validator& val, Scene& sc) {
       if (!sc.fluid.empty()) first = sc.fluid.front();
       auto need = [&](bool ok, const char* key, const std::string& what) {
         if (!ok)
-          val.fail(at.where("metric", i, key) ? at.where("metric", i, key) : &(*arr)[i], path_of("metric", i, key),
+          val.fail(at.where("metric", i, key) ? at.where("metric", i, key) : &(*arr)[i],
+                   path_of("metric", i, key),
                    "[[metric]] '" + spec.name + "' of type " + spec.type + " " + what);
       };
       if (spec.type == "dam_break_front") {
@@ -135,27 +150,30 @@ void load_measurements(toml::table& root, Validator& val, Scene& sc) {
       }
       if (spec.type == "poiseuille_profile") {
         need(spec.width > 0, "width", "needs the channel width `width` > 0");
-        need(std::isfinite(spec.force) && spec.force != 0, "force", "needs the body force `force` (non-zero)");
+        need(std::isfinite(spec.force) && spec.force != 0, "force",
+             "needs the body force `force` (non-zero)");
         need(sc.viscosity > 0, "type", "needs a viscous fluid ([material] viscosity > 0)");
         if (spec.position.empty()) spec.position = {0.5 * (first.min[0] + first.max[0]), 0.0};
         need(spec.position.size() >= 2, "position", "takes position = [x of the column, y of the wall]");
       }
       if (spec.type == "ritter_depth") {
-        need(swe, "type", "is for method swe");
         if (std::isnan(spec.depth)) spec.depth = first.depth;
-        need(spec.depth > 0, "depth", "needs the depth behind the dam (`depth` > 0, or a first [[fluid]] with depth)");
+        need(spec.depth > 0, "depth",
+             "needs the depth behind the dam (`depth` > 0, or a first [[fluid]] with depth)");
         if (spec.position.empty()) spec.position = first.max;
       }
       if (spec.type == "rotating_square_pressure") {
         need(D == 2, "type", "is for 2D scenes");
         spec.angular_velocity = first.angular_velocity;
-        need(spec.angular_velocity != 0, "type", "needs the first [[fluid]] block to rotate (angular_velocity)");
+        need(spec.angular_velocity != 0, "type",
+             "needs the first [[fluid]] block to rotate (angular_velocity)");
         if (spec.width <= 0) spec.width = first.max[0] - first.min[0];
         if (spec.position.empty())
           for (int a = 0; a < D; ++a) spec.position.push_back(0.5 * (first.min[a] + first.max[a]));
       }
       if (spec.type == "hydrostatic_pressure" && std::isnan(spec.surface))
-        for (auto& b : sc.fluid) spec.surface = std::isnan(spec.surface) ? b.max.back() : std::max(spec.surface, b.max.back());
+        for (auto& b : sc.fluid)
+          spec.surface = std::isnan(spec.surface) ? b.max.back() : std::max(spec.surface, b.max.back());
       sc.metrics.push_back(std::move(spec));
     }
   }

@@ -6,6 +6,7 @@
 
 #include "scene/registered_keys.hpp"
 #include "scene/scene.hpp"
+#include "scene/schema.hpp"
 #include "scene/validator.hpp"
 
 namespace ryushi {
@@ -28,6 +29,9 @@ std::vector<std::string> key_names(const MethodSpec& spec) {
 [[noreturn]] void foreign_key(const Validator& val, const toml::key& key, const std::string& path,
                               const std::string& label, const std::string& method, const MethodSpec& spec) {
   const std::string k(key.str());
+  if (auto it = spec.retired.find(k); it != spec.retired.end())
+    val.fail_at(&key.source(), path,
+                label + " " + k + " was removed from method " + method + ": " + it->second);
   const auto owners = methods_owning_key(k);
   const auto own = key_names(spec);
   const std::string own_list = own.empty() ? "none besides name" : joined(own);
@@ -115,6 +119,44 @@ void load_method_section(toml::table& root, Validator& val, Scene& scene) {
     }
   scene.method = method;
   scene.method_params = MethodParams(std::move(values), std::move(given));
+}
+
+void check_owned_by_other_methods(const toml::table& root, const Validator& val, const Scene& scene,
+                                  const std::set<std::string>& written,
+                                  const std::set<std::string>& written_keys) {
+  for (auto& owner : method_spec_names()) {
+    if (owner == scene.method) continue;
+    for (auto& owned : find_method_spec(owner)->owns) {
+      const auto dot = owned.find('.'), equals = owned.find('=');
+      if (dot == std::string::npos) {  // a whole section
+        if (!written.count(owned)) continue;
+        if (find_section(owned)->array_of_tables)
+          val.fail_entry(root, owned, 0, "min", "[[" + owned + "]] #0 is for method " + owner);
+        val.fail(root[owned].node(), owned, "[" + owned + "] is for [method] name = \"" + owner + "\"");
+      }
+      const std::string section = owned.substr(0, dot);
+      const std::string key =
+          owned.substr(dot + 1, equals == std::string::npos ? std::string::npos : equals - dot - 1);
+      if (!written_keys.count(section + "." + key)) continue;
+      const auto* entries = root[section].as_array();
+      if (!entries) {  // a key of a plain section
+        val.fail(root[section][key].node(), section + "." + key,
+                 "[" + section + "] " + key + " is for method " + owner);
+      }
+      // A key, or one of its values, in an entry of [[section]]: the first entry that has it.
+      for (std::size_t i = 0; i < entries->size(); ++i) {
+        const toml::node* node = root[section][i][key].node();
+        if (!node) continue;
+        const std::string label = "[[" + section + "]] #" + std::to_string(i);
+        if (equals == std::string::npos)
+          val.fail_entry(root, section, i, key, label + " " + key + " is for method " + owner);
+        const std::string value = owned.substr(equals + 1);
+        if (node->value<std::string>() == value)
+          val.fail_entry(root, section, i, key,
+                         label + " of " + key + " " + value + " is for method " + owner);
+      }
+    }
+  }
 }
 
 }  // namespace ryushi

@@ -5,6 +5,9 @@
 // each) puts them in [method.<name>] tables, read only when that method is the scene's.
 #include <toml++/toml.h>
 
+#include <set>
+#include <string>
+
 namespace ryushi {
 
 struct Scene;
@@ -12,5 +15,13 @@ class Validator;
 
 // Sets scene.method and scene.method_params (every key of the method, defaults inserted).
 void load_method_section(toml::table& root, Validator& val, Scene& scene);
+
+// What another method owns (MethodSpec::owns) and the scene wrote is an error at its place: a
+// section, a key of a section or of any entry of [[section]], or a value of such a key
+// ("probe.type=front_depth"). `written`: the sections the file and --set wrote (before any
+// default was inserted); `written_keys`: their "section.key"s.
+void check_owned_by_other_methods(const toml::table& root, const Validator& val, const Scene& scene,
+                                  const std::set<std::string>& written,
+                                  const std::set<std::string>& written_keys);
 
 }  // namespace ryushi

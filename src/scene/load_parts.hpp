@@ -12,8 +12,6 @@ class Validator;
 
 // Applies one `section.key=value`, `section.table.key=value` or `section.N.key=value` override.
 void apply_override(toml::table& root, const std::string& text, Validator& val);
-// [swe], [bed], [[bed_hump]], [[bed_ramp]] and [splitting] (method swe).
-void load_swe(toml::table& root, Validator& val, Scene& sc);
 // [[mesh]], [[fluid]], [[import]], [[wall]], [[solid]] and [[fixed_pressure]], with the checks
 // across them (overlaps, containers); walls and solids without `layers` take default_layers,
 // and must cover the support (covering layers) unless the method keeps fewer.

@@ -1,3 +1,5 @@
+#include <spdlog/spdlog.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -6,8 +8,7 @@
 #include <sstream>
 #include <tuple>
 
-#include <spdlog/spdlog.h>
-
+#include "kernels/kernel.hpp"
 #include "scene/load_common.hpp"
 #include "scene/load_elastic.hpp"
 #include "scene/load_heat_rheology.hpp"
@@ -16,7 +17,6 @@
 #include "scene/scene.hpp"
 #include "scene/schema.hpp"
 #include "scene/validator.hpp"
-#include "systems/kernels/kernel.hpp"
 
 namespace ryushi {
 
@@ -25,7 +25,8 @@ double Scene::fluid_height() const {
   for (auto& b : fluid) h = std::max(h, b.max.back() - b.min.back());
   for (auto& import : imports) {  // from the lowest particle's bottom to the highest one's top
     double low = 1e300, high = -1e300;
-    for (auto& x : import.particles->position) low = std::min(low, x[dimension - 1]), high = std::max(high, x[dimension - 1]);
+    for (auto& x : import.particles->position)
+      low = std::min(low, x[dimension - 1]), high = std::max(high, x[dimension - 1]);
     h = std::max(h, high - low + spacing);
   }
   return h;
@@ -47,8 +48,9 @@ double Scene::resolved_sound_speed() const {
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
   {
     std::ifstream probe(path);
-    if (!probe) throw SceneError(path + ": cannot read the scene file (" +
-                                 (std::filesystem::exists(path) ? "permission denied" : "no such file") + ")");
+    if (!probe)
+      throw SceneError(path + ": cannot read the scene file (" +
+                       (std::filesystem::exists(path) ? "permission denied" : "no such file") + ")");
   }
   toml::table root;
   try {
@@ -67,16 +69,21 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     std::string name(k.str());
     if (!find_section(name)) {
       std::string hint = closest_name(name, section_names);
-      val.fail_at(&k.source(), name, "unknown section '" + name + "'" + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
+      val.fail_at(&k.source(), name,
+                  "unknown section '" + name + "'" + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
     }
   }
   // The sections the file (or --set) wrote; the others get their defaults inserted below.
   std::set<std::string> written;
-  std::set<std::string> written_keys;  // "section.key" of the plain sections' keys it wrote
+  std::set<std::string> written_keys;  // "section.key" of the keys it wrote (in any entry of [[section]])
   for (auto& [k, node] : root) {
     written.insert(std::string(k.str()));
     if (auto* t = node.as_table())
       for (auto& [key, _] : *t) written_keys.insert(std::string(k.str()) + "." + std::string(key.str()));
+    if (auto* entries = node.as_array())
+      for (auto& entry : *entries)
+        if (auto* t = entry.as_table())
+          for (auto& [key, _] : *t) written_keys.insert(std::string(k.str()) + "." + std::string(key.str()));
   }
   // The dimension first: vector lengths depend on it.
   {
@@ -89,7 +96,10 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
     if (s.name == "method") continue;  // checked against the chosen method's keys below
     toml::node* node = root.get(s.name);
     if (!node) {
-      if (s.required) val.fail(nullptr, s.name, "missing required section " + (s.array_of_tables ? "[[" + s.name + "]]" : "[" + s.name + "]"));
+      if (s.required)
+        val.fail(
+            nullptr, s.name,
+            "missing required section " + (s.array_of_tables ? "[[" + s.name + "]]" : "[" + s.name + "]"));
       if (!s.array_of_tables) {
         root.insert(s.name, toml::table{});
         val.check_table(*root[s.name].as_table(), "[" + s.name + "]", s.name + ".", s.keys, nullptr);
@@ -114,11 +124,14 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
       }
       // A system entry: `name` plus the parameters the registered system declares.
       auto* name_node = t.get("name");
-      if (!name_node || !name_node->is_string()) val.fail(&(*arr)[i], prefix + "name", label + " needs name = \"<registered system>\"");
+      if (!name_node || !name_node->is_string())
+        val.fail(&(*arr)[i], prefix + "name", label + " needs name = \"<registered system>\"");
       std::string sys = *name_node->value<std::string>();
       if (!find_system_keys(sys)) {
         std::string hint = closest_name(sys, system_key_names());
-        val.fail(name_node, prefix + "name", "no system registered as '" + sys + "'" + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
+        val.fail(
+            name_node, prefix + "name",
+            "no system registered as '" + sys + "'" + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
       }
       auto keys = find_system_keys(sys)->keys;
       keys.insert(keys.begin(), s.keys.begin(), s.keys.end());
@@ -142,27 +155,18 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.spacing = *get("particles", "spacing").value<double>();
   load_method_section(root, val, sc);
   const MethodHooks& hooks = find_method_spec(sc.method)->hooks;
-  // A section or key that belongs to another method ([swe] under wcsph, [time] step_rule under mps).
-  for (auto& owner : method_spec_names()) {
-    if (owner == sc.method) continue;
-    for (auto& owned : find_method_spec(owner)->owns) {
-      const auto dot = owned.find('.');
-      if (dot == std::string::npos && written.count(owned) && find_section(owned)->array_of_tables)
-        val.fail_entry(root, owned, 0, "min", "[[" + owned + "]] #0 is for method " + owner);
-      if (dot == std::string::npos && written.count(owned))
-        val.fail(root[owned].node(), owned, "[" + owned + "] is for [method] name = \"" + owner + "\"");
-      if (dot != std::string::npos && written_keys.count(owned)) {
-        const std::string section = owned.substr(0, dot), key = owned.substr(dot + 1);
-        val.fail(root[section][key].node(), owned, "[" + section + "] " + key + " is for method " + owner);
-      }
-    }
-  }
-  const bool swe = sc.method == "swe";
-  sc.swe.influence_ratio = *get("swe", "influence_ratio").value<double>();
+  // A section, key or value that belongs to another method ([swe] under wcsph, [time] step_rule
+  // under mps, [[probe]] type = "front_depth" under isph).
+  check_owned_by_other_methods(root, val, sc, written, written_keys);
+  // The method's own sections (the shallow water's [swe], [bed]...), read first: the defaults
+  // below may depend on them.
+  if (hooks.read_sections) hooks.read_sections(sc, root, val);
   sc.disorder = root["particles"]["disorder"].value_or(0.0);
   sc.seed = static_cast<std::uint64_t>(root["particles"]["seed"].value_or(1LL));
-  sc.smoothing_ratio = root["particles"]["smoothing_ratio"].value_or(hooks.smoothing_ratio ? hooks.smoothing_ratio(sc) : 1.5);
-  sc.kernel = root["particles"]["kernel"].value_or(hooks.kernel ? hooks.kernel(D) : std::string("wendland_c2"));
+  sc.smoothing_ratio =
+      root["particles"]["smoothing_ratio"].value_or(hooks.smoothing_ratio ? hooks.smoothing_ratio(sc) : 1.5);
+  sc.kernel =
+      root["particles"]["kernel"].value_or(hooks.kernel ? hooks.kernel(D) : std::string("wendland_c2"));
   sc.reorder_interval = static_cast<int>(*get("particles", "reorder_interval").value<long long>());
   sc.neighbour_skin = *get("particles", "neighbour_skin").value<double>();
   sc.density = *get("material", "density").value<double>();
@@ -213,7 +217,6 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   if (sc.probe_interval <= 0) sc.probe_interval = sc.output_interval / 10.0;
   sc.checkpoint_interval = *get("output", "checkpoint_interval").value<double>();
   for (auto& e : *root["output"]["fields"].as_array()) sc.output_fields.push_back(*e.value<std::string>());
-  if (swe) load_swe(root, val, sc);
   // Consistency checks that need more than one key.
   for (int a = 0; a < D; ++a)
     if (!(sc.domain_max[a] > sc.domain_min[a]))
@@ -235,15 +238,18 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   for (int a = 0; a < D; ++a)
     if (sc.periodic[a] && (sc.domain_max[a] - sc.domain_min[a]) < 3 * search_radius)
       val.fail(get("domain", "periodic").as_array()->get(a), "domain.periodic",
-               "periodic axis " + std::to_string(a) + " is shorter than three neighbour-search radii (3 x (support + neighbour_skin spacings" +
-                   std::string(hooks.step_motion > 0 ? " + the step's motion" : "") + ") = " + std::to_string(3 * search_radius) + " m)");
+               "periodic axis " + std::to_string(a) +
+                   " is shorter than three neighbour-search radii (3 x (support + neighbour_skin spacings" +
+                   std::string(hooks.step_motion > 0 ? " + the step's motion" : "") +
+                   ") = " + std::to_string(3 * search_radius) + " m)");
   if (hooks.solves_pressure && sc.solver.preconditioner == "multigrid")
     for (int a = 0; a < D; ++a)
       if (sc.periodic[a])
         val.fail(get("domain", "periodic").as_array()->get(a), "domain.periodic",
                  "the bucket multigrid does not wrap periodic axes (axis " + std::to_string(a) +
                      "); use [solver] preconditioner = \"jacobi\" with a periodic domain");
-  if (sc.fixed_dt > sc.end_time) val.fail(root["time"]["dt"].node(), "time.dt", "time.dt is larger than time.end");
+  if (sc.fixed_dt > sc.end_time)
+    val.fail(root["time"]["dt"].node(), "time.dt", "time.dt is larger than time.end");
   load_heat_and_rheology(root, val, sc);
   load_elastic(root, val, sc);
   if (hooks.validate) hooks.validate(sc, root, val);
@@ -252,7 +258,8 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   // particles in a 1e4 m box) would ask for more memory than the machine has.
   {
     double cells = 1;
-    for (int a = 0; a < D; ++a) cells *= std::max(1.0, std::ceil((sc.domain_max[a] - sc.domain_min[a]) / sc.support_radius()));
+    for (int a = 0; a < D; ++a)
+      cells *= std::max(1.0, std::ceil((sc.domain_max[a] - sc.domain_min[a]) / sc.support_radius()));
     if (cells > double(1ULL << 28)) {
       std::ostringstream m;
       m << "the domain spans " << cells << " cells of the support radius " << sc.support_radius()

@@ -8,8 +8,8 @@
 #include <map>
 #include <sstream>
 
-#include "scene/csv_row.hpp"
-#include "systems/io/hdf5_read.hpp"
+#include "functions/csv_row.hpp"
+#include "io/hdf5_read.hpp"
 
 namespace ryushi {
 

@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include <functional>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -58,6 +59,12 @@ struct MethodHooks {
   // The most a particle moves in one step, in cfl spacings: the neighbour search's radius grows
   // by it (a periodic axis must hold three such radii).
   double step_motion = 0;
+  // The method's own sections (MethodSpec::owns), read right after [method]: the defaults of
+  // the plain sections (kernel, smoothing ratio) may depend on them.
+  std::function<void(Scene&, const toml::table& root, Validator&)> read_sections;
+  // [[wall]] boxes are layers of wall particles around min..max (false: the shallow water's
+  // mirror lines, which hold none, so a fluid block cannot reach into them).
+  bool walls_hold_particles = true;
   // After the scene's plain sections are read and before its geometry: defaults that depend on
   // the scene (which may set keys of the method's table) and the checks of the method's keys
   // against the rest of the scene. The root is the parsed file with --set applied, for the
@@ -72,9 +79,14 @@ struct MethodHooks {
 struct MethodSpec {
   std::string doc;            // one line for docs/scenes.md
   std::vector<KeySpec> keys;  // its [method] keys besides name
-  // Sections ("swe") and keys of other sections ("time.step_rule") only this method reads: a
-  // scene of another method that writes one is an error there.
+  // Sections ("swe"), keys of other sections ("time.step_rule", "fluid.depth" in any [[fluid]])
+  // and values of such keys ("probe.type=front_depth") only this method reads: a scene of
+  // another method that writes one is an error there.
   std::vector<std::string> owns;
+  // [method] keys this method once had, each with what replaced it ("use pressure_gradient =
+  // \"corrected\""): a scene that still writes one is bad input at the key, naming the
+  // replacement, not an unknown key.
+  std::map<std::string, std::string> retired;
   MethodHooks hooks;
 };
 

@@ -7,20 +7,19 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
-
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "functions/motion_table.hpp"
+#include "geometry/bed.hpp"
 #include "geometry/shape_spec.hpp"
 #include "geometry/triangle_mesh.hpp"
-#include "scene/motion_table.hpp"
+#include "materials/rheology.hpp"
 #include "scene/particle_import.hpp"
 #include "scene/registered_keys.hpp"
 #include "solvers/solver_options.hpp"
-#include "systems/rheology/rheology.hpp"
-#include "systems/swe/bed.hpp"
 
 namespace ryushi {
 
@@ -31,8 +30,8 @@ class SceneError : public std::runtime_error {
 
 struct FluidBlock {
   std::vector<double> min, max;
-  std::vector<double> velocity;   // initial velocity (empty: at rest)
-  // Initial fields as formulas of x, y, z (scene/expression.hpp): per axis, "" where `velocity`
+  std::vector<double> velocity;  // initial velocity (empty: at rest)
+  // Initial fields as formulas of x, y, z (functions/expression.hpp): per axis, "" where `velocity`
   // holds a number; pressure "" for the method's own start (hydrostatic). *_where is the key's
   // "file:line:column", for errors found when the particles are made.
   std::vector<std::string> velocity_expression;
@@ -43,7 +42,7 @@ struct FluidBlock {
   std::vector<double> centre;
   double radius = 0;
   int axis = 2;
-  double angular_velocity = 0;    // 2D: initial rigid rotation (omega (y - yc), -omega (x - xc))
+  double angular_velocity = 0;  // 2D: initial rigid rotation (omega (y - yc), -omega (x - xc))
   // swe: the water depth, or the surface elevation (depth = surface - bed), NaN when not given.
   double depth = std::numeric_limits<double>::quiet_NaN();
   double surface_elevation = std::numeric_limits<double>::quiet_NaN();
@@ -74,13 +73,13 @@ struct MeshSpec {
 // (src/geometry/solid_shape.hpp). Fluid within half a spacing of it is cut out of the blocks.
 struct SolidSpec : ShapeSpec {
   std::string name;
-  int mesh = -1;                   // shape = "mesh": the [[mesh]]'s index
-  std::vector<double> velocity;    // prescribed, constant (a lid, a plate); the particles stay put
+  int mesh = -1;                 // shape = "mesh": the [[mesh]]'s index
+  std::vector<double> velocity;  // prescribed, constant (a lid, a plate); the particles stay put
   // Prescribed motion: per axis a formula of t and the particle's rest position x, y, z (the
   // particles move; empty: none). *_where: the key's place, for errors.
   std::vector<std::string> displacement;
   std::string displacement_where;
-  std::vector<MotionSample> displacement_table;  // or tabulated (scene/motion_table.hpp)
+  std::vector<MotionSample> displacement_table;  // or tabulated (functions/motion_table.hpp)
   bool moves() const { return !displacement.empty() || !displacement_table.empty(); }  // its particles
   ThermalCondition thermal;
 };
@@ -108,9 +107,9 @@ struct ProbeSpec {
 // [[metric]] (src/metrics/metrics.hpp).
 struct MetricSpec {
   std::string name, type, probe;
-  std::string reference;  // resolved path ("" : the type's default)
+  std::string reference;                         // resolved path ("" : the type's default)
   std::vector<std::pair<double, double>> table;  // the reference, read and checked by the loader
-  double width = 0;       // dam_break_front: a (0: the first fluid block's width)
+  double width = 0;                              // dam_break_front: a (0: the first fluid block's width)
   double height_ratio = 0;  // dam_break_front: n^2, the column's height over a (0: the first block's)
   double surface = std::numeric_limits<double>::quiet_NaN();  // hydrostatic_pressure
   double max_shift = 0.3, t_max = 2.5;
@@ -153,8 +152,8 @@ struct Scene {
   std::vector<bool> periodic;
   bool outflow_removes = false;  // [domain] outflow = "remove"
   double spacing = 0, smoothing_ratio = 1.5;
-  double disorder = 0;        // fluid displaced by U[-disorder d, disorder d] per axis
-  std::uint64_t seed = 1;     // of the disorder
+  double disorder = 0;     // fluid displaced by U[-disorder d, disorder d] per axis
+  std::uint64_t seed = 1;  // of the disorder
   std::string kernel = "wendland_c2";
   int reorder_interval = 25;
   double neighbour_skin = 0.6;  // Verlet skin in spacings
@@ -175,7 +174,7 @@ struct Scene {
   SolverSpec solver;
   SweSpec swe;
   double end_time = 0, cfl = 0.2, fixed_dt = 0, dt_min = 1e-9;
-  std::string step_rule = "cfl";       // wcsph: cfl or seed001 (seed 001 eq. 35)
+  std::string step_rule = "cfl";  // wcsph: cfl or seed001 (seed 001 eq. 35)
   long long max_steps = 0;
   double output_interval = 0, probe_interval = 0, checkpoint_interval = 0;
   std::vector<std::string> output_fields;

@@ -8,7 +8,7 @@
 
 namespace ryushi {
 
-// FieldVector / FieldValue: numbers or expressions of x, y, z (scene/expression.hpp).
+// FieldVector / FieldValue: numbers or expressions of x, y, z (functions/expression.hpp).
 enum class KeyType { Integer, Float, Bool, String, Vector, BoolVector, StringList, FieldVector, FieldValue };
 
 struct KeySpec {
@@ -36,7 +36,8 @@ struct SectionSpec {
 
 // Shorthands for key tables (the schema's, and those that methods and systems register).
 namespace keyspec {
-inline KeySpec positive(std::string key, std::string unit, std::string def, std::string doc, bool required = false) {
+inline KeySpec positive(std::string key, std::string unit, std::string def, std::string doc,
+                        bool required = false) {
   KeySpec k{std::move(key), KeyType::Float, std::move(unit), std::move(def), std::move(doc), required};
   k.min = 0.0;
   k.min_exclusive = true;

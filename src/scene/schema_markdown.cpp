@@ -31,14 +31,20 @@ void method_tables(std::ostringstream& out) {
     if (!spec.owns.empty()) {  // sections and keys that another method's scene may not write
       out << "Read only under this method:";
       for (auto& owned : spec.owns) {
-        const auto dot = owned.find('.');
-        out << (&owned == &spec.owns.front() ? " " : ", ")
-            << (dot != std::string::npos ? "`[" + owned.substr(0, dot) + "] " + owned.substr(dot + 1) + "`"
-                : find_section(owned) && find_section(owned)->array_of_tables ? "`[[" + owned + "]]`"
-                                                                              : "`[" + owned + "]`");
+        const auto dot = owned.find('.'), equals = owned.find('=');
+        const std::string section = owned.substr(0, dot);
+        const bool entries = find_section(section) && find_section(section)->array_of_tables;
+        out << (&owned == &spec.owns.front() ? " `" : ", `") << (entries ? "[[" : "[") << section
+            << (entries ? "]]" : "]");
+        if (dot != std::string::npos && equals == std::string::npos) out << ' ' << owned.substr(dot + 1);
+        if (equals != std::string::npos)
+          out << ' ' << owned.substr(dot + 1, equals - dot - 1) << " = \"" << owned.substr(equals + 1) << '"';
+        out << '`';
       }
       out << ".\n\n";
     }
+    for (auto& [key, replacement] : spec.retired)
+      out << "Removed: `" << key << "`: " << replacement << "\n\n";
     if (spec.keys.empty()) {
       out << "No keys besides `name`.\n\n";
       continue;

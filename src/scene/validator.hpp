@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/expression.hpp"
+#include "functions/expression.hpp"
 #include "scene/scene.hpp"
 #include "scene/schema.hpp"
 
@@ -24,10 +24,12 @@ class Validator {
 
   std::map<std::string, std::string> overridden;  // "section.key" -> "--set section.key=value"
 
-  [[noreturn]] void fail(const toml::node* node, const std::string& where_path, const std::string& msg) const {
+  [[noreturn]] void fail(const toml::node* node, const std::string& where_path,
+                         const std::string& msg) const {
     fail_at(node ? &node->source() : nullptr, where_path, msg);
   }
-  [[noreturn]] void fail_at(const toml::source_region* src, const std::string& where_path, const std::string& msg) const {
+  [[noreturn]] void fail_at(const toml::source_region* src, const std::string& where_path,
+                            const std::string& msg) const {
     throw SceneError(location_at(src, where_path) + ": " + msg);
   }
   // At key `key` of entry i of [[section]] (at the entry when the scene left the key out).
@@ -60,14 +62,16 @@ class Validator {
       const KeySpec* spec = find_key(keys, key);
       if (!spec) {
         std::string hint = closest_name(key, names);
-        fail_at(&k.source(), path_prefix + key,
-             "unknown key '" + key + "' in " + label + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
+        fail_at(
+            &k.source(), path_prefix + key,
+            "unknown key '" + key + "' in " + label + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
       }
       check_value(node, *spec, label, path_prefix + key);
     }
     for (auto& k : keys) {
       if (table.contains(k.key)) continue;
-      if (k.required) fail(table_node, path_prefix + k.key, label + " is missing required key '" + k.key + "'");
+      if (k.required)
+        fail(table_node, path_prefix + k.key, label + " is missing required key '" + k.key + "'");
       if (!k.default_value.empty() && k.default_value.front() != '(') {
         auto parsed = toml::parse("v = " + k.default_value);
         table.insert(k.key, *parsed["v"].node());
@@ -96,8 +100,9 @@ class Validator {
       auto* arr = node.as_array();
       if (!arr) bad_type();
       if (static_cast<int>(arr->size()) != dimension)
-        fail(&node, path, "'" + spec.key + "' in " + label + " has " + std::to_string(arr->size()) +
-                              " values; the scene is " + std::to_string(dimension) + "D");
+        fail(&node, path,
+             "'" + spec.key + "' in " + label + " has " + std::to_string(arr->size()) +
+                 " values; the scene is " + std::to_string(dimension) + "D");
       return arr;
     };
     switch (spec.type) {
@@ -115,12 +120,14 @@ class Validator {
       case KeyType::String: {
         if (!node.is_string()) bad_type();
         std::string v = *node.value<std::string>();
-        if (!spec.choices.empty() && std::find(spec.choices.begin(), spec.choices.end(), v) == spec.choices.end()) {
+        if (!spec.choices.empty() &&
+            std::find(spec.choices.begin(), spec.choices.end(), v) == spec.choices.end()) {
           std::string list;
           for (auto& c : spec.choices) list += (list.empty() ? "" : ", ") + c;
           std::string hint = closest_name(v, spec.choices);
-          fail(&node, path, "'" + spec.key + "' in " + label + " is '" + v + "'; allowed: " + list +
-                                (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+          fail(&node, path,
+               "'" + spec.key + "' in " + label + " is '" + v + "'; allowed: " + list +
+                   (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
         }
         break;
       }
@@ -162,7 +169,8 @@ class Validator {
   void check_field(toml::node* node, const KeySpec& spec, const std::string& label, const std::string& path,
                    BadType&& bad_type) {
     if (node->is_number()) {
-      if (!std::isfinite(*node->value<double>())) fail(node, path, "'" + spec.key + "' in " + label + " must be finite");
+      if (!std::isfinite(*node->value<double>()))
+        fail(node, path, "'" + spec.key + "' in " + label + " must be finite");
       return;
     }
     if (!node->is_string()) bad_type();

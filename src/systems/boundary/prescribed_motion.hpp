@@ -5,13 +5,13 @@
 // over 2 microseconds) as its velocity, which the wall conditions use as the surface's, and its
 // second derivative (over 0.2 ms: round-off ~1e-9 m/s^2 for centimetre strokes) as its
 // acceleration, which enters Adami's wall pressure; or the tabulated displacement, its slope and
-// the slope's change (scene/motion_table.hpp).
+// the slope's change (functions/motion_table.hpp).
 #include <string>
 #include <vector>
 
 #include "ecs/io.hpp"
-#include "scene/expression.hpp"
-#include "scene/motion_table.hpp"
+#include "functions/expression.hpp"
+#include "functions/motion_table.hpp"
 
 namespace ryushi {
 
@@ -41,15 +41,17 @@ class PrescribedMotion final : public System<D> {
         if (!b.table.empty()) {
           auto [shift, speed] = sample_motion(b.table, t);
           const auto change = motion_acceleration(b.table, t);
-          for (int a = 0; a < D; ++a) x[i][a] = o[a] + shift[a], v[i][a] = speed[a], acceleration[i][a] = change[a];
+          for (int a = 0; a < D; ++a)
+            x[i][a] = o[a] + shift[a], v[i][a] = speed[a], acceleration[i][a] = change[a];
           continue;
         }
         const double y = D > 1 ? o[1] : 0.0, z = D > 2 ? o[2] : 0.0;
         for (int a = 0; a < D; ++a) {
           x[i][a] = o[a] + b.formulas[a](o[0], y, z, t);
           v[i][a] = (b.formulas[a](o[0], y, z, t + h) - b.formulas[a](o[0], y, z, t - h)) / (2 * h);
-          acceleration[i][a] = (b.formulas[a](o[0], y, z, t + ha) - 2 * (x[i][a] - o[a]) +
-                                b.formulas[a](o[0], y, z, t - ha)) / (ha * ha);
+          acceleration[i][a] =
+              (b.formulas[a](o[0], y, z, t + ha) - 2 * (x[i][a] - o[a]) + b.formulas[a](o[0], y, z, t - ha)) /
+              (ha * ha);
         }
       }
     }

@@ -11,7 +11,7 @@
 
 #include "ecs/component.hpp"
 #include "ecs/resources.hpp"
-#include "systems/kernels/kernel.hpp"
+#include "kernels/kernel.hpp"
 #include "systems/neighbour/domain.hpp"
 
 namespace ryushi {

@@ -1,7 +1,7 @@
 #pragma once
 // Physical and numerical constants of a weakly compressible SPH run, fixed at scene load.
 #include "ecs/math.hpp"
-#include "systems/kernels/kernel.hpp"
+#include "kernels/kernel.hpp"
 #include "systems/neighbour/domain.hpp"
 
 namespace ryushi {
@@ -15,11 +15,11 @@ struct WcsphParameters {
   double rho0 = 1000;
   double c0 = 10;
   double gamma = 7;
-  double delta = 0.1;  // delta-SPH diffusion coefficient (seed 002 eq. 18)
-  double alpha = 0.02; // artificial viscosity, linear term (seed 002 eq. 23, "A")
-  double beta = 0.0;   // artificial viscosity, quadratic term ("B")
-  double mu = 0;       // dynamic viscosity, Pa s (0: no laminar viscosity system); with a
-                       // rheology model the largest at the start (the first step's limit)
+  double delta = 0.1;               // delta-SPH diffusion coefficient (seed 002 eq. 18)
+  double alpha = 0.02;              // artificial viscosity, linear term (seed 002 eq. 23, "A")
+  double beta = 0.0;                // artificial viscosity, quadratic term ("B")
+  double mu = 0;                    // dynamic viscosity, Pa s (0: no laminar viscosity system); with a
+                                    // rheology model the largest at the start (the first step's limit)
   bool variable_viscosity = false;  // a rheology model writes the viscosity column each stage
   bool wall_no_slip = true;
   bool wall_acceleration = false;  // some body moves: Adami's wall pressure takes its acceleration
@@ -32,8 +32,8 @@ struct WcsphParameters {
   // (p_i + p_j)/(rho_i rho_j) + Pi_ij: Monaghan's viscosity for approaching pairs (v_ij.x_ij < 0),
   // mu_ij = h v_ij.x_ij / (r^2 + 0.01 h^2). Symmetric in (i, j). inv_rho_ij = 1/(rho_i rho_j),
   // inv_r2_eta2 = 1/(r^2 + 0.01 h^2): the pair loop's shared divisions.
-  double pair_pressure_coefficient(double pi, double pj, double rhoi, double rhoj, double inv_rho_ij, double vx,
-                                   double inv_r2_eta2) const {
+  double pair_pressure_coefficient(double pi, double pj, double rhoi, double rhoj, double inv_rho_ij,
+                                   double vx, double inv_r2_eta2) const {
     double coeff = (pi + pj) * inv_rho_ij;
     if (vx < 0) {
       const double m = kernel.h() * vx * inv_r2_eta2;

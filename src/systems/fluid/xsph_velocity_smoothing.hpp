@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "ecs/io.hpp"
-#include "systems/kernels/kernel.hpp"
+#include "kernels/kernel.hpp"
 #include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/domain.hpp"
 #include "systems/neighbour/neighbour_list.hpp"

@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "ecs/component.hpp"
-#include "systems/kernels/kernel.hpp"
+#include "kernels/kernel.hpp"
 #include "systems/neighbour/domain.hpp"
 
 namespace ryushi {

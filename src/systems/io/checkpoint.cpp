@@ -1,12 +1,12 @@
 #include "systems/io/checkpoint.hpp"
 
-#include "systems/io/hdf5_image.hpp"
-#include "systems/io/hdf5_read.hpp"
-
 #include <hdf5.h>
 
 #include <sstream>
 #include <stdexcept>
+
+#include "io/hdf5_image.hpp"
+#include "io/hdf5_read.hpp"
 
 namespace ryushi {
 
@@ -14,7 +14,8 @@ namespace {
 
 void write_raw(hid_t loc, const std::string& name, hid_t type, const void* data, std::vector<hsize_t> dims) {
   H5Handle space{H5Screate_simple(int(dims.size()), dims.data(), nullptr), H5Sclose};
-  H5Handle set{H5Dcreate2(loc, name.c_str(), type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose};
+  H5Handle set{H5Dcreate2(loc, name.c_str(), type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+               H5Dclose};
   if (set.id < 0) throw std::runtime_error("HDF5: cannot create " + name);
   if (!dims.empty() && dims[0] == 0) return;
   h5_check(H5Dwrite(set.id, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "writing " + name);
@@ -39,10 +40,14 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 const char* type_tag(ColumnType t) {
   switch (t) {
-    case ColumnType::Scalar: return "scalar";
-    case ColumnType::Vector: return "vector";
-    case ColumnType::Tensor: return "tensor";
-    case ColumnType::Flags: return "flags";
+    case ColumnType::Scalar:
+      return "scalar";
+    case ColumnType::Vector:
+      return "vector";
+    case ColumnType::Tensor:
+      return "tensor";
+    case ColumnType::Flags:
+      return "flags";
   }
   return "?";
 }
@@ -91,7 +96,8 @@ void write_checkpoint(const std::filesystem::path& path, const World<D>& world, 
     double step = double(clock.step), removed = double(clock.removed);
     std::vector<double> values;
     std::string names;
-    for (auto& [name, value] : clock_fields(clock, step, removed)) values.push_back(*value), names += name + "\n";
+    for (auto& [name, value] : clock_fields(clock, step, removed))
+      values.push_back(*value), names += name + "\n";
     write_raw(file, "clock", H5T_NATIVE_DOUBLE, values.data(), {values.size()});
     write_string(file, "clock_names", names);
     // Frames written so far (the XDMF collection) and the probe rows.
@@ -145,7 +151,8 @@ void write_checkpoint(const std::filesystem::path& path, const World<D>& world, 
           write_raw(group.id, name, H5T_NATIVE_DOUBLE, world.column(Component<Scalar>{name}).data(), {n});
           break;
         case ColumnType::Vector:
-          write_raw(group.id, name, H5T_NATIVE_DOUBLE, world.column(Component<Vector>{name}).data(), {n, hsize_t(D)});
+          write_raw(group.id, name, H5T_NATIVE_DOUBLE, world.column(Component<Vector>{name}).data(),
+                    {n, hsize_t(D)});
           break;
         case ColumnType::Tensor:
           write_raw(group.id, name, H5T_NATIVE_DOUBLE, world.column(Component<Tensor>{name}).data(),
@@ -166,13 +173,16 @@ void write_checkpoint(const std::filesystem::path& path, const World<D>& world, 
 
 Checkpoint read_checkpoint_header(const std::filesystem::path& path) {
   H5Handle file{-1, H5Fclose};
-  H5E_BEGIN_TRY { file.id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT); }
+  H5E_BEGIN_TRY {
+    file.id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  }
   H5E_END_TRY;
   if (file.id < 0) throw std::runtime_error(path.string() + ": cannot open the checkpoint");
   Checkpoint c;
   try {
     H5E_BEGIN_TRY {
-      if (read_string(file.id, "format") != "ryushi checkpoint 1") throw std::runtime_error("not a ryushi checkpoint");
+      if (read_string(file.id, "format") != "ryushi checkpoint 1")
+        throw std::runtime_error("not a ryushi checkpoint");
     }
     H5E_END_TRY;
     c.scene.version = read_string(file.id, "version");
@@ -206,7 +216,8 @@ Checkpoint read_checkpoint_header(const std::filesystem::path& path) {
     auto system_names = split(read_string(file.id, "system_names"), '\n');
     for (std::size_t k = 0; k < system_names.size(); ++k)
       c.system_states.push_back(
-          {system_names[k], read_raw<double>(file.id, "system_state_" + std::to_string(k), H5T_NATIVE_DOUBLE)});
+          {system_names[k],
+           read_raw<double>(file.id, "system_state_" + std::to_string(k), H5T_NATIVE_DOUBLE)});
     if (H5Lexists(file.id, "profile_names", H5P_DEFAULT) > 0) {
       auto names = split(read_string(file.id, "profile_names"), '\n');
       auto calls = read_raw<double>(file.id, "profile_calls", H5T_NATIVE_DOUBLE);
@@ -249,11 +260,15 @@ void restore_checkpoint_columns(const std::filesystem::path& path, World<D>& wor
     }
     auto data = read_raw<double>(group.id, name, H5T_NATIVE_DOUBLE, &dims);
     if (!sized) world.restore_size(dims.at(0), std::int32_t(id)), n = dims[0], sized = true;
-    if (dims.at(0) != n) throw std::runtime_error(path.string() + ": column '" + name + "' has the wrong length");
+    if (dims.at(0) != n)
+      throw std::runtime_error(path.string() + ": column '" + name + "' has the wrong length");
     const std::size_t per = t == ColumnType::Scalar ? 1 : t == ColumnType::Vector ? D : D * D;
-    if (data.size() != n * per) throw std::runtime_error(path.string() + ": column '" + name + "' has the wrong shape");
+    if (data.size() != n * per)
+      throw std::runtime_error(path.string() + ": column '" + name + "' has the wrong shape");
     switch (t) {
-      case ColumnType::Scalar: world.ensure(Component<Scalar>{name}).assign(data.begin(), data.end()); break;
+      case ColumnType::Scalar:
+        world.ensure(Component<Scalar>{name}).assign(data.begin(), data.end());
+        break;
       case ColumnType::Vector: {
         auto& col = world.ensure(Component<Vector>{name});
         for (std::size_t i = 0; i < n; ++i)
@@ -266,13 +281,16 @@ void restore_checkpoint_columns(const std::filesystem::path& path, World<D>& wor
           for (int a = 0; a < D * D; ++a) col[i].data()[a] = data[i * D * D + a];
         break;
       }
-      case ColumnType::Flags: break;
+      case ColumnType::Flags:
+        break;
     }
   }
   for (auto& name : world.column_names()) {
     bool found = false;
     for (auto& entry : entries) found |= entry.substr(0, entry.rfind(':')) == name;
-    if (!found) throw std::runtime_error(path.string() + ": the pipeline's column '" + name + "' is not in the checkpoint");
+    if (!found)
+      throw std::runtime_error(path.string() + ": the pipeline's column '" + name +
+                               "' is not in the checkpoint");
   }
 }
 

@@ -1,12 +1,12 @@
 #include "systems/io/hdf5_frame.hpp"
 
-#include "systems/io/hdf5_image.hpp"
-
 #include <hdf5.h>
 
 #include <cstdint>
 #include <numeric>
 #include <stdexcept>
+
+#include "io/hdf5_image.hpp"
 
 namespace ryushi {
 
@@ -17,9 +17,11 @@ std::vector<std::string> default_frame_fields() {
 namespace {
 
 template <class T>
-void write_dataset(hid_t file, const std::string& name, hid_t type, const T* data, std::vector<hsize_t> dims) {
+void write_dataset(hid_t file, const std::string& name, hid_t type, const T* data,
+                   std::vector<hsize_t> dims) {
   H5Handle space{H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose};
-  H5Handle set{H5Dcreate2(file, name.c_str(), type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose};
+  H5Handle set{H5Dcreate2(file, name.c_str(), type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+               H5Dclose};
   if (set.id < 0) throw std::runtime_error("HDF5: cannot create dataset " + name);
   h5_check(H5Dwrite(set.id, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "writing " + name);
 }

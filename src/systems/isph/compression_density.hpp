@@ -24,8 +24,8 @@
 
 #include "ecs/component.hpp"
 #include "ecs/math.hpp"
-#include "systems/kernels/kernel.hpp"
-#include "systems/kernels/lattice_kernel_sum.hpp"
+#include "kernels/kernel.hpp"
+#include "kernels/lattice_kernel_sum.hpp"
 #include "systems/operators/stencil.hpp"
 
 namespace ryushi {
@@ -38,7 +38,8 @@ class CompressionError {
   static constexpr double kDilationCap = 0.01;
 
   // walls_complete: the walls have their layers (wall_rows = "adami"), no copies are needed.
-  CompressionError(const Kernel<D>& kernel, double spacing, CompressionDensity measure, bool walls_complete = false)
+  CompressionError(const Kernel<D>& kernel, double spacing, CompressionDensity measure,
+                   bool walls_complete = false)
       : walls_complete_(walls_complete),
         kernel_(kernel),
         spacing_(spacing),

@@ -6,8 +6,8 @@
 
 #include "ecs/component.hpp"
 #include "ecs/math.hpp"
+#include "kernels/kernel.hpp"
 #include "systems/isph/compression_density.hpp"
-#include "systems/kernels/kernel.hpp"
 #include "systems/neighbour/domain.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/operators/laplacian_choice.hpp"
@@ -50,7 +50,7 @@ struct IsphParameters {
   // alpha of the stabilised source (Asai et al. 2012), and the density error it answers.
   double compression_relaxation = 0.0;
   CompressionDensity compression_density = CompressionDensity::FirstShell;
-  double relaxation_time = 0.0;  // cfl d / max(sqrt(2 g H), initial speed): the step of the flow at rest
+  double relaxation_time = 0.0;      // cfl d / max(sqrt(2 g H), initial speed): the step of the flow at rest
   bool extrapolated_surface = true;  // p = 0 half a spacing outside a surface particle
   bool wall_no_slip = true;
   // Neumann wall rows (eq. 17) with the corrected gradient at the wall particle (the paper's), or

@@ -32,7 +32,7 @@
 #include <vector>
 
 #include "ecs/math.hpp"
-#include "systems/kernels/kernel.hpp"
+#include "kernels/kernel.hpp"
 #include "systems/loops/for_each_particle.hpp"
 #include "systems/loops/pairs_once.hpp"
 #include "systems/neighbour/domain.hpp"

@@ -4,7 +4,7 @@
 // the reference number density n0 (eq. 6) and lambda0 (eq. 8) of the initial lattice.
 #include "ecs/component.hpp"
 #include "ecs/math.hpp"
-#include "systems/kernels/kernel.hpp"
+#include "kernels/kernel.hpp"
 #include "systems/neighbour/domain.hpp"
 #include "systems/operators/mps_reference.hpp"
 

@@ -4,7 +4,7 @@
 // perfect square (cubic) lattice of spacing d around one particle.
 #include <cmath>
 
-#include "systems/kernels/kernel.hpp"
+#include "kernels/kernel.hpp"
 
 namespace ryushi {
 

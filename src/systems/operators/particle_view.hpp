@@ -10,7 +10,7 @@
 #include <span>
 
 #include "ecs/math.hpp"
-#include "systems/kernels/kernel.hpp"
+#include "kernels/kernel.hpp"
 #include "systems/neighbour/domain.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 

@@ -8,7 +8,6 @@
 #include <limits>
 
 #include "systems/elastic/elastic_parameters.hpp"
-#include "systems/operators/mps_reference.hpp"
 #include "systems/probes/solid_force.hpp"
 #include "systems/probes/solid_surface_force.hpp"
 
@@ -26,7 +25,8 @@ auto reduce_particles(std::size_t n, std::pair<double, double> init, Body&& body
         return acc;
       },
       [take_max](Pair a, Pair b) {
-        return take_max ? Pair{std::max(a.first, b.first), 0.0} : Pair{a.first + b.first, a.second + b.second};
+        return take_max ? Pair{std::max(a.first, b.first), 0.0}
+                        : Pair{a.first + b.first, a.second + b.second};
       });
 }
 
@@ -61,8 +61,8 @@ double body_front(const World<D>& world, double x_max, double d) {
 // The surface of the water column standing on the probe's base point (probes.hpp). Candidates are
 // the particles within the support of the vertical line; the line is sampled every d/4.
 template <int D>
-double water_surface(const Vec<D>& base, const World<D>& world, const Kernel<D>& kernel, double rho0, double top,
-                     double d) {
+double water_surface(const Vec<D>& base, const World<D>& world, const Kernel<D>& kernel, double rho0,
+                     double top, double d) {
   auto& x = world.column(components::position);
   auto& kind = world.column(components::kind);
   auto& m = world.column(components::mass);
@@ -108,7 +108,7 @@ double water_surface(const Vec<D>& base, const World<D>& world, const Kernel<D>&
 }  // namespace
 
 template <int D>
-std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const World<D>& world,
+std::vector<double> sample_probes(const std::vector<Probe>& probes, const World<D>& world,
                                   const MethodContext<D>& context) {
   const Kernel<D>& kernel = context.kernel;
   const Domain<D>& domain = context.domain;
@@ -127,19 +127,25 @@ std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const Wo
     for (std::size_t a = 0; a < probe.position.size(); ++a) at[a] = probe.position[a];
     if (probe.type == "pressure") {
       const double support2 = kernel.support() * kernel.support();
-      auto [num, den] = reduce_particles(world.size(), {0.0, 0.0}, [&](std::size_t i, auto& acc) {
-        if (kind[i] != kFluid) return;
-        const double r2 = (x[i] - at).squaredNorm();
-        if (r2 >= support2) return;
-        double w = kernel.w(std::sqrt(r2)) * m[i] / rho[i];
-        acc.first += p[i] * w;
-        acc.second += w;
-      }, false);
+      auto [num, den] = reduce_particles(
+          world.size(), {0.0, 0.0},
+          [&](std::size_t i, auto& acc) {
+            if (kind[i] != kFluid) return;
+            const double r2 = (x[i] - at).squaredNorm();
+            if (r2 >= support2) return;
+            double w = kernel.w(std::sqrt(r2)) * m[i] / rho[i];
+            acc.first += p[i] * w;
+            acc.second += w;
+          },
+          false);
       out.push_back(den > 0 ? num / den : std::numeric_limits<double>::quiet_NaN());
     } else if (probe.type == "surge_front") {
-      auto r = reduce_particles(world.size(), {lowest, 0.0}, [&](std::size_t i, auto& acc) {
-        if (kind[i] == kFluid) acc.first = std::max(acc.first, x[i][0]);
-      }, true);
+      auto r = reduce_particles(
+          world.size(), {lowest, 0.0},
+          [&](std::size_t i, auto& acc) {
+            if (kind[i] == kFluid) acc.first = std::max(acc.first, x[i][0]);
+          },
+          true);
       out.push_back(body_front(world, r.first, d) + 0.5 * d);
     } else if (probe.type == "particle_count") {
       std::size_t count = 0;
@@ -153,18 +159,19 @@ std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const Wo
       out.push_back(front < world.size() ? depth[front] : std::numeric_limits<double>::quiet_NaN());
     } else if (probe.type == "kinetic_energy" || probe.type == "potential_energy") {
       const bool kinetic = probe.type == "kinetic_energy";
-      auto r = reduce_particles(world.size(), {0.0, 0.0}, [&](std::size_t i, auto& acc) {
-        if (kind[i] == kFluid) acc.first += kinetic ? 0.5 * m[i] * v[i].squaredNorm() : -m[i] * gravity.dot(x[i]);
-      }, false);
+      auto r = reduce_particles(
+          world.size(), {0.0, 0.0},
+          [&](std::size_t i, auto& acc) {
+            if (kind[i] == kFluid)
+              acc.first += kinetic ? 0.5 * m[i] * v[i].squaredNorm() : -m[i] * gravity.dot(x[i]);
+          },
+          false);
       out.push_back(r.first);
     } else if (probe.type == "force") {
-      // WCSPH: the reaction to its pair forces; MPS, ISPH: the pressure on the first wall layer.
-      SurfaceForceParameters surface{d, rho0, context.viscosity, 0.0};
-      if (context.method == "mps") {
-        const auto ref = mps_reference(kernel, d);
-        surface.mps_viscous = context.viscosity / rho0 * 2.0 * D / (ref.lambda0 * ref.n0);
-      }
-      const Vec<D> force = context.method == "wcsph"
+      // As the method reads it: the reaction to its pair forces (WCSPH), or the pressure and
+      // shear on the first wall layer (MPS, ISPH).
+      const SurfaceForceParameters surface{d, rho0, context.viscosity, context.wall_layer_viscous};
+      const Vec<D> force = context.solid_force == SolidForceReading::PairReaction
                                ? solid_force<D>(probe.solid, world, kernel, domain)
                                : solid_surface_force<D>(probe.solid, world, kernel, domain, gravity, surface);
       out.push_back(force[probe.axis]);
@@ -173,7 +180,8 @@ std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const Wo
       auto& rest = world.column(components::rest_position);
       std::size_t nearest = world.size();
       for (std::size_t i = 0; i < world.size(); ++i)
-        if (kind[i] == kElastic && (nearest == world.size() || (rest[i] - at).squaredNorm() < (rest[nearest] - at).squaredNorm()))
+        if (kind[i] == kElastic &&
+            (nearest == world.size() || (rest[i] - at).squaredNorm() < (rest[nearest] - at).squaredNorm()))
           nearest = i;
       if (nearest == world.size()) {
         out.push_back(std::numeric_limits<double>::quiet_NaN());
@@ -197,9 +205,9 @@ std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const Wo
   return out;
 }
 
-template std::vector<double> sample_probes<2>(const std::vector<ProbeSpec>&, const World<2>&,
+template std::vector<double> sample_probes<2>(const std::vector<Probe>&, const World<2>&,
                                               const MethodContext<2>&);
-template std::vector<double> sample_probes<3>(const std::vector<ProbeSpec>&, const World<3>&,
+template std::vector<double> sample_probes<3>(const std::vector<Probe>&, const World<3>&,
                                               const MethodContext<3>&);
 
 }  // namespace ryushi

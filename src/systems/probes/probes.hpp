@@ -29,18 +29,23 @@
 //   force             a component of the fluid's force on a [[solid]]: WCSPH's pair-force
 //                     reaction (solid_force.hpp), else the surface pressure and wall shear
 //                     on the body's first layer (solid_surface_force.hpp)
+#include <string>
 #include <vector>
 
 #include "ecs/world.hpp"
-#include "methods/method_context.hpp"
-#include "scene/scene.hpp"
-#include "systems/kernels/kernel.hpp"
-#include "systems/neighbour/domain.hpp"
+#include "systems/method_context.hpp"
 
 namespace ryushi {
 
+// One probe as the scene's [[probe]] gives it (the types above).
+struct Probe {
+  std::string type;
+  std::vector<double> position;
+  int solid = -1, axis = 0;  // force: the [[solid]]'s index and the component
+};
+
 template <int D>
-std::vector<double> sample_probes(const std::vector<ProbeSpec>& probes, const World<D>& world,
+std::vector<double> sample_probes(const std::vector<Probe>& probes, const World<D>& world,
                                   const MethodContext<D>& context);
 
 }  // namespace ryushi

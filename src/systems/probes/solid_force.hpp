@@ -9,9 +9,9 @@
 #include <span>
 
 #include "ecs/world.hpp"
-#include "systems/probes/fluid_cells.hpp"
-#include "systems/kernels/kernel.hpp"
+#include "kernels/kernel.hpp"
 #include "systems/neighbour/domain.hpp"
+#include "systems/probes/fluid_cells.hpp"
 
 namespace ryushi {
 

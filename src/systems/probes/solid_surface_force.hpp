@@ -22,7 +22,7 @@
 #include <span>
 
 #include "ecs/world.hpp"
-#include "systems/kernels/kernel.hpp"
+#include "kernels/kernel.hpp"
 #include "systems/neighbour/domain.hpp"
 #include "systems/probes/fluid_cells.hpp"
 
@@ -44,7 +44,8 @@ Vec<D> solid_surface_force(int body, const World<D>& world, const Kernel<D>& ker
   auto& kind = world.column(components::kind);
   auto& m = world.column(components::mass);
   std::span<const Vec<D>> acceleration;
-  if (world.has(components::body_acceleration.name)) acceleration = world.column(components::body_acceleration);
+  if (world.has(components::body_acceleration.name))
+    acceleration = world.column(components::body_acceleration);
   const FluidCells<D> cells(world, domain, kernel.support());
   Vec<D> force = Vec<D>::Zero();
   for (std::size_t w = 0; w < world.size(); ++w) {

@@ -11,11 +11,11 @@
 
 #include "ecs/io.hpp"
 #include "ecs/outer_sum.hpp"
+#include "materials/rheology.hpp"
 #include "systems/heat/heat_parameters.hpp"
 #include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/operators/renormalisation.hpp"
-#include "systems/rheology/rheology.hpp"
 
 namespace ryushi {
 

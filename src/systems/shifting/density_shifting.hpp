@@ -23,8 +23,8 @@
 #include <vector>
 
 #include "ecs/io.hpp"
+#include "kernels/lattice_kernel_sum.hpp"
 #include "systems/free_surface/free_surface_detection.hpp"
-#include "systems/kernels/lattice_kernel_sum.hpp"
 #include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/operators/gradient.hpp"

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "ecs/io.hpp"
-#include "systems/kernels/kernel.hpp"
+#include "kernels/kernel.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/swe/ghost_images.hpp"
 #include "systems/swe/swe_parameters.hpp"

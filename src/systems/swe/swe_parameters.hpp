@@ -8,7 +8,7 @@
 #include "ecs/component.hpp"
 #include "ecs/math.hpp"
 #include "ecs/resources.hpp"
-#include "systems/swe/bed.hpp"
+#include "geometry/bed.hpp"
 
 namespace ryushi {
 
@@ -30,13 +30,13 @@ struct MirrorWall {
 };
 
 struct SweParameters {
-  double g = 9.81;          // gravity, m/s^2 (along -z, normal to the plane)
-  double manning = 0;       // n_M, s/m^(1/3)
-  double alpha_e = 1.3;     // r_e = alpha_e sqrt(A_max) (eq. 9)
-  double cfl = 0.5;         // eq. 13
-  double rho0 = 1000;       // water density (mass = rho0 V, pressure = rho0 g h)
-  double area0 = 0;         // A0 = d^2, the initial particle area
-  double dry_depth = 1e-6;  // friction's hydraulic radius is at least this (m)
+  double g = 9.81;              // gravity, m/s^2 (along -z, normal to the plane)
+  double manning = 0;           // n_M, s/m^(1/3)
+  double alpha_e = 1.3;         // r_e = alpha_e sqrt(A_max) (eq. 9)
+  double cfl = 0.5;             // eq. 13
+  double rho0 = 1000;           // water density (mass = rho0 V, pressure = rho0 g h)
+  double area0 = 0;             // A0 = d^2, the initial particle area
+  double dry_depth = 1e-6;      // friction's hydraulic radius is at least this (m)
   bool edge_correction = true;  // momentum = mps only
   // The pressure term of the momentum equation (docs/swe.md, "Momentum"): mps, eq. 6's gradient of
   // the surface with the faded dry-side term; sph, the gradient of the depth sum of eq. 7 itself.

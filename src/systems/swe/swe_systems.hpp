@@ -15,7 +15,7 @@
 #include <cmath>
 
 #include "ecs/io.hpp"
-#include "systems/kernels/kernel.hpp"
+#include "kernels/kernel.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
 #include "systems/swe/ghost_images.hpp"
 #include "systems/swe/swe_parameters.hpp"

@@ -28,6 +28,8 @@ inline std::vector<double> csv_numbers(const std::string& line) {
 }
 
 // Whether a line holds nothing but blanks (skipped).
-inline bool csv_blank(const std::string& line) { return line.find_first_not_of(" \t\r") == std::string::npos; }
+inline bool csv_blank(const std::string& line) {
+  return line.find_first_not_of(" \t\r") == std::string::npos;
+}
 
 }  // namespace ryushi

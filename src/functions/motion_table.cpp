@@ -1,12 +1,12 @@
-#include "scene/motion_table.hpp"
-
-#include "scene/csv_row.hpp"
+#include "functions/motion_table.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+
+#include "functions/csv_row.hpp"
 
 namespace ryushi {
 
@@ -62,7 +62,8 @@ std::array<double, 3> motion_acceleration(const std::vector<MotionSample>& table
                                [](double time, const MotionSample& s) { return time < s.t; });
   next = std::clamp(next, table.begin() + 1, table.end() - 1);
   const double span = next->t - (next - 1)->t;
-  const auto before = sample_motion(table, t - 0.5 * span).second, after = sample_motion(table, t + 0.5 * span).second;
+  const auto before = sample_motion(table, t - 0.5 * span).second,
+             after = sample_motion(table, t + 0.5 * span).second;
   for (int k = 0; k < 3; ++k) a[k] = (after[k] - before[k]) / span;
   return a;
 }

@@ -22,7 +22,8 @@ namespace ryushi {
 enum class KernelType { CubicSpline, QuinticSpline, WendlandC2, Spiky, Mps };
 
 inline const std::vector<std::string>& kernel_names() {
-  static const std::vector<std::string> names{"cubic_spline", "quintic_spline", "wendland_c2", "spiky", "mps"};
+  static const std::vector<std::string> names{"cubic_spline", "quintic_spline", "wendland_c2", "spiky",
+                                              "mps"};
   return names;
 }
 
@@ -41,11 +42,21 @@ class Kernel {
     const double hd = D == 2 ? h * h : h * h * h;
     double c = 0;
     switch (type) {
-      case KernelType::CubicSpline: c = D == 2 ? 10.0 / (7.0 * pi) : 1.0 / pi; break;
-      case KernelType::QuinticSpline: c = D == 2 ? 7.0 / (478.0 * pi) : 1.0 / (120.0 * pi); break;
-      case KernelType::WendlandC2: c = D == 2 ? 7.0 / (4.0 * pi) : 21.0 / (16.0 * pi); break;
-      case KernelType::Spiky: c = D == 2 ? 5.0 / (16.0 * pi) : 15.0 / (64.0 * pi); break;
-      case KernelType::Mps: c = D == 2 ? 1.0 / pi : 3.0 / (2.0 * pi); break;
+      case KernelType::CubicSpline:
+        c = D == 2 ? 10.0 / (7.0 * pi) : 1.0 / pi;
+        break;
+      case KernelType::QuinticSpline:
+        c = D == 2 ? 7.0 / (478.0 * pi) : 1.0 / (120.0 * pi);
+        break;
+      case KernelType::WendlandC2:
+        c = D == 2 ? 7.0 / (4.0 * pi) : 21.0 / (16.0 * pi);
+        break;
+      case KernelType::Spiky:
+        c = D == 2 ? 5.0 / (16.0 * pi) : 15.0 / (64.0 * pi);
+        break;
+      case KernelType::Mps:
+        c = D == 2 ? 1.0 / pi : 3.0 / (2.0 * pi);
+        break;
     }
     sigma_ = c / hd;
   }
@@ -53,9 +64,12 @@ class Kernel {
   KernelType type() const { return type_; }
   double support_factor() const {
     switch (type_) {
-      case KernelType::QuinticSpline: return 3.0;
-      case KernelType::Mps: return 1.0;
-      default: return 2.0;
+      case KernelType::QuinticSpline:
+        return 3.0;
+      case KernelType::Mps:
+        return 1.0;
+      default:
+        return 2.0;
     }
   }
   double support() const { return support_factor() * h_; }

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "systems/io/hdf5_image.hpp"
+#include "io/hdf5_image.hpp"
 
 namespace ryushi {
 

@@ -1,4 +1,4 @@
-#include "scene/expression.hpp"
+#include "functions/expression.hpp"
 
 #include <muParser.h>
 

@@ -1,5 +1,6 @@
 // The shallow-water method's sections ([swe], [bed], [[bed_hump]], [[bed_ramp]], [splitting]) and
-// its bed: a constant, an ESRI ASCII raster, humps and ramps (docs/swe.md).
+// its bed: a constant, an ESRI ASCII raster, humps and ramps (docs/swe.md). The method's
+// read_sections hook (swe_spec.cpp); the schema has inserted their defaults.
 #include <spdlog/spdlog.h>
 
 #include <cmath>
@@ -7,35 +8,35 @@
 #include <sstream>
 #include <tuple>
 
+#include "methods/swe_spec.hpp"
 #include "scene/load_common.hpp"
-#include "scene/load_parts.hpp"
 #include "scene/validator.hpp"
 
 namespace ryushi {
 
-void load_swe(toml::table& root, Validator& val, Scene& sc) {
+void read_swe_sections(Scene& sc, const toml::table& root, Validator& val) {
   const std::string& path = sc.path;
-  const int D = sc.dimension;
-  const SceneEntries at{root, sc};
+  auto get = [&](const char* section, const char* key) { return root[section][key]; };
   auto& w = sc.swe;
-  w.gravity = *at.get("swe", "gravity").value<double>();
-  w.manning = *at.get("swe", "manning").value<double>();
-  w.slip = *at.get("swe", "walls").value<std::string>() == "slip";
-  w.edge_correction = *at.get("swe", "edge_correction").value<bool>();
-  w.momentum = *at.get("swe", "momentum").value<std::string>();
+  w.influence_ratio = *get("swe", "influence_ratio").value<double>();
+  w.gravity = *get("swe", "gravity").value<double>();
+  w.manning = *get("swe", "manning").value<double>();
+  w.slip = *get("swe", "walls").value<std::string>() == "slip";
+  w.edge_correction = *get("swe", "edge_correction").value<bool>();
+  w.momentum = *get("swe", "momentum").value<std::string>();
   if (root["swe"]["ritter_dam_x"] || root["swe"]["ritter_depth"]) {
     if (!root["swe"]["ritter_dam_x"] || !root["swe"]["ritter_depth"])
       val.fail(root["swe"].node(), "swe.ritter_dam_x", "[swe] ritter_dam_x and ritter_depth go together");
-    w.ritter_dam_x = *at.get("swe", "ritter_dam_x").value<double>();
-    w.ritter_depth = *at.get("swe", "ritter_depth").value<double>();
+    w.ritter_dam_x = *get("swe", "ritter_dam_x").value<double>();
+    w.ritter_depth = *get("swe", "ritter_depth").value<double>();
   }
-  w.splitting = *at.get("splitting", "enabled").value<bool>();
-  w.split_area_ratio = *at.get("splitting", "area_ratio").value<double>();
-  w.split_distance = *at.get("splitting", "distance").value<double>();
-  w.split_along_gap = *at.get("splitting", "direction").value<std::string>() == "gap";
+  w.splitting = *get("splitting", "enabled").value<bool>();
+  w.split_area_ratio = *get("splitting", "area_ratio").value<double>();
+  w.split_distance = *get("splitting", "distance").value<double>();
+  w.split_along_gap = *get("splitting", "direction").value<std::string>() == "gap";
   w.max_particles = root["splitting"]["max_particles"].value_or(0LL);
   auto& bed = *w.bed;
-  bed.elevation_base = *at.get("bed", "elevation").value<double>();
+  bed.elevation_base = *get("bed", "elevation").value<double>();
   if (auto raster = root["bed"]["raster"].value<std::string>()) {
     auto file = std::filesystem::path(*raster);
     if (file.is_relative()) file = std::filesystem::path(path).parent_path() / file;
@@ -63,7 +64,6 @@ void load_swe(toml::table& root, Validator& val, Scene& sc) {
       bed.ramps.push_back(
           {xy(r["min"].node()), xy(r["max"].node()), xy(r["origin"].node()), xy(r["gradient"].node())});
     }
-  sc.gravity.assign(D, 0.0);
 }
 
 }  // namespace ryushi

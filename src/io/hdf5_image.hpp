@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "systems/io/atomic_file.hpp"
+#include "io/atomic_file.hpp"
 
 namespace ryushi {
 

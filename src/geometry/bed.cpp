@@ -1,4 +1,4 @@
-#include "systems/swe/bed.hpp"
+#include "geometry/bed.hpp"
 
 #include <algorithm>
 #include <cmath>

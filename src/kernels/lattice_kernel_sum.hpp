@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "ecs/lattice.hpp"
-#include "systems/kernels/kernel.hpp"
+#include "kernels/kernel.hpp"
 
 namespace ryushi {
 
