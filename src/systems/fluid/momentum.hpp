@@ -16,7 +16,7 @@ namespace ryushi {
 template <int D>
 struct PressureArtificialViscosity {
   using Sum = Vec<D>;
-  const WcsphParameters<D>& p;
+  WcsphParameters<D> p;  // a copy: the pair loop keeps its terms where row sums cannot alias them
   std::span<const double> pressure, rho, inv_rho, m;
   std::span<Vec<D>> acceleration;
 

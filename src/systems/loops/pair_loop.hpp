@@ -143,18 +143,22 @@ class PairLoop {
       for (std::size_t i = r.begin(); i != r.end(); ++i) ((std::get<K>(rows_sum)[i] = terms.zero()), ...);
     });
     const double support2 = kernel_.support() * kernel_.support();
-    auto written = [&](std::size_t k) { return k < owned && in.kind[k] == in.written_kind; };
     auto visit = [&](std::size_t lo, std::size_t hi) {
+      // Local copies of the inputs and terms: a store to a row's sum cannot alias them, so their
+      // spans and constants stay in registers across the pair loop.
+      const Inputs local = in;
+      const std::tuple<Terms...> term{terms...};
+      auto written = [&](std::size_t k) { return k < local.owned && local.kind[k] == local.written_kind; };
       PairGeometry<D> g;
       for (std::size_t i = lo; i < hi; ++i) {
         const bool write_i = written(i);
-        std::tuple<typename Terms::Sum...> sums{terms.zero()...};
+        std::tuple<typename Terms::Sum...> sums{std::get<K>(term).zero()...};
         for (const std::uint32_t j : neighbours_above(nl, i)) {
           const PairSides sides{write_i, written(j)};
           if (!sides.i && !sides.j) continue;
-          if (!geometry<Periodic, Moving>(in, static_cast<std::uint32_t>(i), j, support2, g)) continue;
+          if (!geometry<Periodic, Moving>(local, static_cast<std::uint32_t>(i), j, support2, g)) continue;
           // A ghost j is never written: its sums slot is only read through sides.j == false.
-          (terms(g, sides, std::get<K>(sums), std::get<K>(rows_sum)[sides.j ? j : i]), ...);
+          (std::get<K>(term)(g, sides, std::get<K>(sums), std::get<K>(rows_sum)[sides.j ? j : i]), ...);
         }
         if (write_i) ((std::get<K>(rows_sum)[i] += std::get<K>(sums)), ...);
       }
