@@ -32,19 +32,30 @@ struct ContinuityDeltaSph {
   std::span<double> density_rate;
   double diffusion;  // delta h c0
 
+  struct Row {  // row i's values, read once per row
+    double V, rho;
+    Vec<D> grad;
+    bool fluid;
+  };
+  Row row(std::size_t i) const {
+    Row r{V[i], rho[i], Vec<D>::Zero(), kind[i] == kFluid};
+    if constexpr (Diffusion) r.grad = grad[i];
+    return r;
+  }
+
   Sum zero() const { return {}; }
-  void operator()(const PairGeometry<D>& g, PairSides s, Sum& to_i, Sum& to_j) const {
+  void operator()(const PairGeometry<D>& g, PairSides s, const Row& ri, Sum& to_i, Sum& to_j) const {
     // v_ij . grad_i W_ij is the same seen from j (both factors change sign).
     const double t = g.vij.dot(g.gradW);
     if (s.i) to_i.divergence += V[g.j] * t;
-    if (s.j) to_j.divergence += V[g.i] * t;
+    if (s.j) to_j.divergence += ri.V * t;
     if constexpr (Diffusion) {
-      if (kind[g.i] == kFluid && kind[g.j] == kFluid) {
+      if (ri.fluid && kind[g.j] == kFluid) {
         // (x_j - x_i) . grad_i W_ij / r^2 = -F exactly, so no division per pair; antisymmetric:
         // what i gains, j loses (weighted by V).
-        const double psi = -2.0 * (rho[g.j] - rho[g.i]) * g.F - (grad[g.i] + grad[g.j]).dot(g.gradW);
+        const double psi = -2.0 * (rho[g.j] - ri.rho) * g.F - (ri.grad + grad[g.j]).dot(g.gradW);
         if (s.i) to_i.diffusive += V[g.j] * psi;
-        if (s.j) to_j.diffusive -= V[g.i] * psi;
+        if (s.j) to_j.diffusive -= ri.V * psi;
       }
     }
   }

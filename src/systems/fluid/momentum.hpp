@@ -20,17 +20,22 @@ struct PressureArtificialViscosity {
   std::span<const double> pressure, rho, inv_rho, m;
   std::span<Vec<D>> acceleration;
 
+  struct Row {  // row i's values, read once per row
+    double pressure, rho, inv_rho, m;
+  };
+  Row row(std::size_t i) const { return {pressure[i], rho[i], inv_rho[i], m[i]}; }
+
   Sum zero() const { return Sum::Zero(); }
-  void operator()(const PairGeometry<D>& g, PairSides s, Sum& to_i, Sum& to_j) const {
+  void operator()(const PairGeometry<D>& g, PairSides s, const Row& ri, Sum& to_i, Sum& to_j) const {
     // Divisions are the costly part of a pair: 1/rho comes per particle, 1/(r^2 + eta^2) is
     // shared with the laminar term (the compiler keeps one).
     const double h = p.kernel.h();
-    const double inv_rho_ij = inv_rho[g.i] * inv_rho[g.j];
+    const double inv_rho_ij = ri.inv_rho * inv_rho[g.j];
     const double inv_r2_eta2 = 1.0 / (g.r2 + 0.01 * h * h);
-    const double coeff = p.pair_pressure_coefficient(pressure[g.i], pressure[g.j], rho[g.i], rho[g.j],
-                                                     inv_rho_ij, g.vij.dot(g.xij), inv_r2_eta2);
+    const double coeff = p.pair_pressure_coefficient(ri.pressure, pressure[g.j], ri.rho, rho[g.j], inv_rho_ij,
+                                                     g.vij.dot(g.xij), inv_r2_eta2);
     if (s.i) to_i -= m[g.j] * coeff * g.gradW;
-    if (s.j) to_j += m[g.i] * coeff * g.gradW;
+    if (s.j) to_j += ri.m * coeff * g.gradW;
   }
   void store(std::size_t i, const Sum& sum) const { acceleration[i] = sum + p.gravity; }
 };

@@ -13,7 +13,10 @@
 //   void operator()(const PairGeometry<D>& g, PairSides s, Sum& to_i, Sum& to_j) const;
 //   void store(std::size_t i, const Sum& sum) const;   // the row's result from its sum
 // where operator() adds the pair's share to to_i when s.i and to to_j when s.j (never reading
-// them). The loop calls store once per written row, terms in the order given.
+// them). The loop calls store once per written row, terms in the order given. A term that reads
+// values of row i in every pair may take them once per row: it defines `Row row(std::size_t i)
+// const` and its operator() takes them, operator()(g, s, row_i, to_i, to_j) (a row's sums are
+// written between its pairs, so the compiler could not keep i's values from one pair to the next).
 //
 // Which rows are written. A row is written when it is one of the loop's kind (the fluid, for a
 // fluid stage) and this process owns it. Rows [0, owned) are owned; rows from `owned` on are
@@ -54,6 +57,27 @@ struct PairGeometry {
 struct PairSides {
   bool i, j;
 };
+
+// A term that takes its row's values once per row (see above), and how the loop calls either kind.
+template <class T>
+concept CachesRow = requires(const T& t, std::size_t i) {
+  t.row(i);
+};
+struct NoRowValues {};
+template <class T>
+auto row_values(const T& term, std::size_t i) {
+  if constexpr (CachesRow<T>)
+    return term.row(i);
+  else
+    return NoRowValues{};
+}
+template <int D, class T, class Row, class Sum>
+void add_pair(const T& term, const PairGeometry<D>& g, PairSides s, const Row& row_i, Sum& to_i, Sum& to_j) {
+  if constexpr (CachesRow<T>)
+    term(g, s, row_i, to_i, to_j);
+  else
+    term(g, s, to_i, to_j);
+}
 
 // f(std::true_type) or f(std::false_type): a flag fixed for a run becomes a template argument,
 // out of the pair loop.
@@ -125,10 +149,13 @@ class PairLoop {
     for_each_of_kind(in.kind.first(in.owned), in.written_kind, [&](std::size_t i) {
       std::tuple<typename Terms::Sum...> sums{terms.zero()...};
       std::tuple<typename Terms::Sum...> unused{terms.zero()...};  // the j side, which gather never keeps
+      const std::tuple rows{row_values(terms, i)...};
       PairGeometry<D> g;
       for (const std::uint32_t j : nl.of(i)) {
         if (!geometry<Periodic, Moving>(in, static_cast<std::uint32_t>(i), j, support2, g)) continue;
-        (terms(g, PairSides{true, false}, std::get<K>(sums), std::get<K>(unused)), ...);
+        (add_pair(terms, g, PairSides{true, false}, std::get<K>(rows), std::get<K>(sums),
+                  std::get<K>(unused)),
+         ...);
       }
       (terms.store(i, std::get<K>(sums)), ...);
     });
@@ -153,12 +180,15 @@ class PairLoop {
       for (std::size_t i = lo; i < hi; ++i) {
         const bool write_i = written(i);
         std::tuple<typename Terms::Sum...> sums{std::get<K>(term).zero()...};
+        const std::tuple rows{row_values(std::get<K>(term), i)...};
         for (const std::uint32_t j : neighbours_above(nl, i)) {
           const PairSides sides{write_i, written(j)};
           if (!sides.i && !sides.j) continue;
           if (!geometry<Periodic, Moving>(local, static_cast<std::uint32_t>(i), j, support2, g)) continue;
           // A ghost j is never written: its sums slot is only read through sides.j == false.
-          (std::get<K>(term)(g, sides, std::get<K>(sums), std::get<K>(rows_sum)[sides.j ? j : i]), ...);
+          (add_pair(std::get<K>(term), g, sides, std::get<K>(rows), std::get<K>(sums),
+                    std::get<K>(rows_sum)[sides.j ? j : i]),
+           ...);
         }
         if (write_i) ((std::get<K>(rows_sum)[i] += std::get<K>(sums)), ...);
       }
