@@ -61,7 +61,11 @@ TEST_CASE("validation: the WCSPH dam break is the same with and without a Verlet
 
 TEST_CASE("validation: the MPS and ISPH dam breaks are the same with and without a Verlet skin") {
   // Their steps move a particle up to cfl d = 0.2 d and half the skin is 0.3 d: at the peak
-  // speed a build every second step, fewer while the column accelerates (measured 34% and 43%).
+  // speed a build every second step, fewer while the column accelerates (MPS: measured 34%).
+  // ISPH's step follows the fastest particle's own speed from the first step (no sqrt(2 g H)
+  // floor since 2026-11-28), so every step moves it cfl d, and its shift (up to 0.2 d) comes on
+  // top: a build every second step at best, every step where the shift adds more than 0.1 d
+  // (measured 50.4%; 43% with the floor's short early steps).
   SUBCASE("mps") { check_skin_changes_nothing("dam_break_mps_2d.toml", "0", 0.5); }
-  SUBCASE("isph") { check_skin_changes_nothing("dam_break_isph_2d.toml", "0", 0.5); }
+  SUBCASE("isph") { check_skin_changes_nothing("dam_break_isph_2d.toml", "0", 0.6); }
 }

@@ -66,7 +66,8 @@ std::vector<KeySpec> isph_keys() {
       ranged({"compression_relaxation", K::Float, "", "0.0",
               "isph: alpha of the stabilised source (Asai et al. 2012): interior rows add alpha rho0 "
               "(<rho>_i/rho0 - 1)/tau^2 (compression_density says which density), tau the larger of dt and "
-              "the step of the flow at rest (cfl d / sqrt(2 g H)); it keeps particles from pairing up in "
+              "the step of the flow at rest at a CFL of 0.2 (0.2 d / sqrt(2 g H)); it keeps particles from "
+              "pairing up in "
               "violent flows; 0 turns it off (the paper's divergence-free source)."},
              0.0, 1.0),
       choice("compression_density", "\"first_shell\"",

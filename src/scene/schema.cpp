@@ -117,7 +117,7 @@ std::vector<SectionSpec> build() {
                 ranged({"max_particles", K::Integer, "", "(20 x the initial count)", "Cap on the particle count: when a step's splits would pass it, splitting stops with one warning and the run goes on."}, 0, std::nullopt)}});
   s.push_back({"time", false, true, "Time control.",
                {positive("end", "s", "", "Simulated end time.", true),
-                ranged({"cfl", K::Float, "", "(0.2; swe 0.5)", "CFL number for the adaptive step dt = cfl h / (c0 + |v|max), also bounded by force and viscous limits (WCSPH's resting tank holds at a fixed step of 0.5 h / c0 with the leapfrog, h / c0 with the midpoint: tests/stability/time_step_test.cpp); swe: dt = cfl min sqrt(A_i) / (sqrt(g h_i) + |u_i|) (eq. 13)."}, 1e-6, 1.0),
+                ranged({"cfl", K::Float, "", "(0.2; swe 0.5)", "CFL number for the adaptive step dt = cfl h / (c0 + |v|max), also bounded by force and viscous limits; isph: dt (|v|max + |g| dt) = cfl d, the particles' own speed and what gravity adds within the step, and at most 0.03 sqrt(d / g), the particle-scale surface wave (no sound speed, no free-fall floor; docs/isph.md, \"The step\"); mps: cfl l0 / max(|v|max, sqrt(2 g H)) (WCSPH's resting tank holds at a fixed step of 0.5 h / c0 with the leapfrog, h / c0 with the midpoint: tests/stability/time_step_test.cpp); swe: dt = cfl min sqrt(A_i) / (sqrt(g h_i) + |u_i|) (eq. 13)."}, 1e-6, 1.0),
                 non_negative("dt", "s", "0.0", "Fixed time step; 0 = adaptive."),
                 ranged({"max_steps", K::Integer, "", "0", "Stop after this many steps (0: no limit)."}, 0, std::nullopt),
                 non_negative("dt_min", "s", "1e-9", "An adaptive step below this is a numerical failure (dt collapse)."),

@@ -34,6 +34,20 @@ enum class IsphDescription { Lagrangian, Ale, Eulerian };
 // surface particle in it: the surface, spray), corrected elsewhere. See IsphPressureCorrection.
 enum class PressureGradientForm { Corrected, Symmetric, Hybrid };
 
+// The CFL number of ISPH's step rule until 2026-11-28 (cfl d / max(|v|max, sqrt(2 g H))), at which
+// the stabilised source's relaxation time and density shifting's C_shift per step were tuned:
+// both keep that rule's rate whatever step the flow takes now (isph.cpp, density_shifting.hpp).
+inline constexpr double kTunedCfl = 0.2;
+
+// Water at rest takes at most kSurfaceWaveStep sqrt(d / g): the free surface is explicit (p = 0
+// where the particles are), and its particle-scale waves set a step limit that no speed shows.
+// Measured (docs/isph.md, "The step"): the violent-flow sloshing tank (H/d = 20) keeps its energy
+// at 0.1 and blows up within 0.07 s at 0.2; the 3D box tank at rest holds 1.9e-5 J at fixed steps
+// of 0.18 sqrt(d / g) and grows to 0.03 J at 0.27. The dam break at a/d = 20 takes its column's
+// first collapse in a few such steps: its front agrees with a/d = 40's within 3% at 0.03 (3.85%
+// at 0.1), about the old floor's step at H/d = 20-40.
+inline constexpr double kSurfaceWaveStep = 0.03;
+
 template <int D>
 struct IsphParameters {
   Kernel<D> kernel{KernelType::CubicSpline, 1.0};
@@ -50,7 +64,7 @@ struct IsphParameters {
   // alpha of the stabilised source (Asai et al. 2012), and the density error it answers.
   double compression_relaxation = 0.0;
   CompressionDensity compression_density = CompressionDensity::FirstShell;
-  double relaxation_time = 0.0;      // cfl d / max(sqrt(2 g H), initial speed): the step of the flow at rest
+  double relaxation_time = 0.0;      // kTunedCfl d / max(sqrt(2 g H), initial speed)
   bool extrapolated_surface = true;  // p = 0 half a spacing outside a surface particle
   bool wall_no_slip = true;
   // Neumann wall rows (eq. 17) with the corrected gradient at the wall particle (the paper's), or
@@ -63,7 +77,7 @@ struct IsphParameters {
   bool wall_acceleration = false;
   bool fixed_pressure = false;  // the scene has [[fixed_pressure]] boxes (the column exists)
   double cfl = 0.2;
-  double reference_speed = 1;  // sqrt(2 g H): bounds the first steps before anything moves
+  double reference_speed = 1;  // sqrt(2 g H); bounds the step only without gravity
 
   // The list is built at x^n and reused at the predicted x*: a particle moves at most cfl * d
   // per step (isph_time_step, VelocityTimeStep), two approach by at most twice that, plus the shift.

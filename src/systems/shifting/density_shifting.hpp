@@ -18,6 +18,7 @@
 //                      gradient (the ALE convective term for the shift).
 // The surface normal N_i is the free-surface system's (`surface_normal`, the corrected gradient
 // of the kernel sum; eqs. 24-25 use the gradient of the minimum eigenvalue of L_i^-1 instead).
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -42,6 +43,11 @@ struct ShiftingParameters {
   Kernel<D> kernel{KernelType::CubicSpline, 1.0};
   Domain<D> domain;
   double spacing = 1, rho0 = 1000, coefficient = 0.005;
+  // Eq. 20 moves C_shift h per step: a rate set by the step. With reference_cfl > 0 it is the
+  // rate of the step reference_cfl d / max(|v|max, reference_speed) (ISPH's rule until
+  // 2026-11-28, at CFL 0.2, where C_shift was tuned), whatever the step now taken: a step twice
+  // as long shifts twice as far. 0 keeps the shift per step.
+  double reference_cfl = 0, reference_speed = 0;
   double radius() const { return 1.1 * std::sqrt(double(D)) * spacing; }  // d*
 };
 
@@ -86,15 +92,20 @@ class DensityShifting final : public System<D> {
   std::string name() const override { return "particle_shifting"; }
   static constexpr auto io =
       Io{reads(components::mass, components::density, components::kind, components::shifting_density,
-               components::free_surface, components::surface_normal, neighbours_resource),
+               components::free_surface, components::surface_normal, neighbours_resource, resources::dt),
          writes(components::position, components::velocity, components::shift)};
   Access access() const override { return io.access(); }
   void run(SystemContext<D>& ctx) override {
-    auto [m, density, kind, rho, surface, normal, nl, x, v, shift] = io.fetch(ctx);
+    auto [m, density, kind, rho, surface, normal, nl, dt, x, v, shift] = io.fetch(ctx);
     particle_volumes(m, density, volume_);
     dv_.resize(m.size());
     ParticleView<D> view{std::span<const Vec<D>>(x.data(), x.size()), volume_, nl, p_.kernel, p_.domain};
-    const double radius = p_.radius(), scale = p_.coefficient * p_.kernel.h();
+    const double radius = p_.radius();
+    double scale = p_.coefficient * p_.kernel.h();
+    if (p_.reference_cfl > 0) {
+      const double speed = std::max(max_fluid_speed<D>(kind, v), p_.reference_speed);
+      scale *= dt * speed / (p_.reference_cfl * p_.spacing);
+    }
     // Gather every shift and velocity change from the unshifted state first, then apply.
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       thread_local std::vector<Vec<D>> g;
