@@ -2,7 +2,7 @@
 // What every shifting model does after it has chosen a particle's shift dr: the particle moves
 // (w = v + dr/dt, ISPH paper eq. 7) and its velocity is carried to the new place by the ALE
 // convective term, v_i += (dr . grad) v_i, with the corrected gradient (eq. 9) so that a linear
-// velocity field is carried exactly, limited to the range of the neighbours' velocities.
+// velocity field is carried exactly.
 #include <vector>
 
 #include "systems/loops/for_each_particle.hpp"
@@ -25,17 +25,7 @@ Vec<D> shifted_velocity_change(const Stencil<D>& stencil, std::span<const Vec<D>
   const std::size_t i = stencil.i;
   Vec<D> change = Vec<D>::Zero();
   for (std::size_t k = 0; k < nb.size(); ++k) change += dr.dot(g[k]) * (v[nb[k]] - v[i]);
-  // The carried velocity stays within the range its neighbours span (per component): a shift
-  // moves a particle less than a spacing, so a velocity beyond every neighbour's is an
-  // extrapolation, and in a stretching surge tip it fed back (shifted forwards, given the faster
-  // velocity there, shifted again): at CFL 0.4 the a/d = 100 dam break's tip sprayed ahead and its
-  // front error was 6.7% with the shift at its bound, 1.22% with the bound (docs/isph.md).
-  Vec<D> lo = v[i], hi = v[i];
-  for (auto j : nb) {
-    lo = lo.cwiseMin(v[j]);
-    hi = hi.cwiseMax(v[j]);
-  }
-  return (v[i] + change).cwiseMax(lo).cwiseMin(hi) - v[i];
+  return change;
 }
 
 template <int D>
