@@ -228,7 +228,7 @@ TEST_CASE("access: every system of every method fetches exactly what it declares
                                              "MpsExplicitForces",
                                              "MpsPressureEquation",
                                              "MpsPressureCorrection",
-                                             "MpsCollision",
+                                             "PairCollision",
                                              "PreconditionerSetup",
                                              "LinearSolve",
                                              "PressureSystemDump",

@@ -20,7 +20,7 @@
 #include "methods/mps_spec.hpp"
 #include "methods/scene_particles.hpp"
 #include "systems/integrate/velocity_time_step.hpp"
-#include "systems/mps/mps_collision.hpp"
+#include "systems/fluid/pair_collision.hpp"
 #include "systems/mps/mps_explicit_forces.hpp"
 #include "systems/mps/mps_number_density.hpp"
 #include "systems/mps/mps_pressure_correction.hpp"
@@ -94,9 +94,9 @@ std::vector<SystemPtr<D>> mps_pipeline(const Scene& s, const MpsParameters<D>& p
   list.push_back(std::make_shared<MpsPressureCorrection<D>>(p));
   const auto& mp = s.method_params;
   if (mp.number("collision_distance") > 0)
-    list.push_back(std::make_shared<MpsCollision<D>>(p, mp.number("collision_distance"),
-                                                     mp.number("wall_collision_distance"),
-                                                     mp.number("collision_restitution")));
+    list.push_back(std::make_shared<PairCollision<D>>(PairCollisionParameters{
+        "mps_collision", mp.number("collision_distance") * p.spacing,
+        mp.number("wall_collision_distance") * p.spacing, mp.number("collision_restitution")}));
   if (s.fixed_dt <= 0) list.push_back(std::make_shared<VelocityTimeStep<D>>(mps_time_step<D>(p)));
   return list;
 }
