@@ -87,6 +87,7 @@ void Runner<D>::write_summary(const std::string& status, const std::string& mess
     w.key("max_relative_residual").value(st.max_relative_residual);
     w.key("max_unknowns").value(static_cast<std::int64_t>(st.max_rows));
     w.key("max_nonzeros").value(static_cast<std::int64_t>(st.max_nonzeros));
+    w.key("preconditioner_fallbacks").value(static_cast<std::int64_t>(st.preconditioner_fallbacks));
     w.end_object();
   }
   w.end_object();

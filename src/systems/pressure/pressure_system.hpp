@@ -51,6 +51,7 @@ struct LinearSolveStatistics {
   // the Krylov method's vectors with the solution.
   std::size_t max_matrix_bytes = 0, max_preconditioner_bytes = 0, max_krylov_bytes = 0;
   std::string krylov;  // the method the solves used (a non-symmetric system takes BiCGSTAB)
+  long long preconditioner_fallbacks = 0;  // solves that failed with the preconditioner, redone with Jacobi
 };
 
 inline constexpr Resource<PressureSystem> pressure_system_resource{"pressure_system"};
