@@ -10,6 +10,7 @@
 #include "app/run.hpp"
 #include "front_criterion.hpp"
 #include "h5_read.hpp"
+#include "isph_one_set_up.hpp"
 #include "test_util.hpp"
 
 using namespace ryushi;
@@ -66,6 +67,30 @@ TEST_CASE("isph: dam break front meets the criterion at a/d = 20 and 40 and runs
   // Measured: 2.42% over T <= 2.5 (the issue's 3%); a/d = 40 against 80: 1.25%.
   double difference = test::front_difference(coarse, fine);
   MESSAGE("a/d = 20 against 40 over T <= 2.5: ", 100 * difference, "%");
+  CHECK(difference <= 0.03);
+}
+
+// The one-set-up candidate (isph_one_set_up.hpp) on the same dam break: the criterion at a/d = 20
+// and 40, through the impact and the plunging wave to t = 2.2 s with no particle over the walls.
+// Measured 2026-11-28: a/d = 20 2.21% after a shift of 0.256, a/d = 40 1.52% after 0.280, 2.06%
+// apart, none removed. Without its pair collisions the corrected gradient failed in the
+// fragmented flow after the plunging wave in some runs (exit 3 at t = 1.42 s, the step below
+// dt_min) and not in others (frames at other times change the steps): not asserted.
+TEST_CASE("isph: the one-set-up candidate meets the dam-break criterion and runs through the impact") {
+  auto out = test::scratch("isph_one_set_up_20");
+  REQUIRE(run_scene(dam_break(out, 2.2, test::isph_one_set_up({"particles.spacing=0.0125"}))) == kExitDone);
+  auto summary = test::read_text(out / "summary.json");
+  CHECK(test::json_number(summary, "removed_particles") == 0);
+  CHECK(test::json_number(summary, "max_speed") < 2 * std::sqrt(2 * g * 2 * a));
+  auto coarse = test::front_of(test::read_csv(out / "probes.csv"), a, t_scale);
+  CHECK(coarse.Z.back() >= 3.9);
+  auto fine_out = test::scratch("isph_one_set_up_40");
+  REQUIRE(run_scene(dam_break(fine_out, 2.6 * t_scale,
+                              test::isph_one_set_up({"particles.spacing=0.00625"}))) == kExitDone);
+  auto fine = test::front_of(test::read_csv(fine_out / "probes.csv"), a, t_scale);
+  test::check_time_origin_criterion(coarse, fine);
+  const double difference = test::front_difference(coarse, fine);
+  MESSAGE("one set-up, a/d = 20 against 40 over T <= 2.5: ", 100 * difference, "%");
   CHECK(difference <= 0.03);
 }
 

@@ -13,6 +13,7 @@
 #include "app/exit_codes.hpp"
 #include "app/run.hpp"
 #include "h5_read.hpp"
+#include "isph_one_set_up.hpp"
 #include "shipped_scene_run.hpp"
 #include "systems/isph/compression_density.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
@@ -26,13 +27,18 @@ namespace fs = std::filesystem;
 // spacing outside the surface particles. Measured over t = 0.5-2 s: every probe within 0.014% of
 // rho g depth; at t = 2 s speeds below 7e-5 sqrt(g H) under the top four rows, up to
 // 5e-4 sqrt(g H) in them (the issue asks 1e-4 everywhere: not met near the surface).
-TEST_CASE("isph: a resting tank keeps rho g depth and stays still") {
-  auto out = test::scratch("isph_hydrostatic");
+namespace {
+// The resting tank (scenes/hydrostatic_isph_2d.toml, H/d = 40) to t = 2 s under `sets`: every probe
+// within 0.5% of rho g depth over t = 0.5-2 s, and the largest speed at the end below 1e-4 sqrt(g H)
+// under the top four rows and 1e-3 sqrt(g H) in them (issue 49).
+void check_resting_tank(const std::string& label, const std::vector<std::string>& sets) {
+  auto out = test::scratch(label);
   RunOptions opt;
   opt.scene = test::scene_path("hydrostatic_isph_2d.toml");
   opt.out_dir = out.string();
   opt.quiet = true;
   opt.end_time = 2.0;
+  opt.sets = sets;
   REQUIRE(run_scene(opt) == kExitDone);
   auto probes = test::read_csv(out / "probes.csv");
   const double rho_g = 1000 * 9.81, H = 0.5;
@@ -42,7 +48,7 @@ TEST_CASE("isph: a resting tank keeps rho g depth and stays still") {
     double worst = 0;
     for (std::size_t k = 0; k < probes["time"].size(); ++k)
       if (probes["time"][k] >= 0.5) worst = std::max(worst, std::abs(probes[name][k] / (rho_g * depth) - 1));
-    MESSAGE(std::string(name), ": largest deviation from rho g depth over t = 0.5-2 s: ", worst);
+    MESSAGE(label, ", ", std::string(name), ": largest deviation from rho g depth over t = 0.5-2 s: ", worst);
     CHECK(worst < 0.005);  // the issue's 0.5%
   }
   // Speeds after settling, from the last frame: below the surface row the water is still.
@@ -57,9 +63,21 @@ TEST_CASE("isph: a resting tank keeps rho g depth and stays still") {
     double& band = x[3 * i + 1] < H - 4 * d ? interior : surface;
     band = std::max(band, speed);
   }
-  MESSAGE("max speed / sqrt(gH): below the top four rows ", interior, ", top four rows ", surface);
+  MESSAGE(label, ": max speed / sqrt(gH): below the top four rows ", interior, ", top four rows ", surface);
   CHECK(interior < 1e-4);
   CHECK(surface < 1e-3);  // the rows near the surface jitter (reported in docs/isph.md)
+}
+}  // namespace
+
+TEST_CASE("isph: a resting tank keeps rho g depth and stays still") {
+  check_resting_tank("isph_hydrostatic", {});
+}
+
+// The one-set-up candidate (isph_one_set_up.hpp). Measured 2026-11-28: 5.7e-5 and 3.8e-4 sqrt(g H),
+// the probes within 8e-5 of rho g depth (the paper's set-up: 7.0e-5, 4.0e-4, 1.6e-4). Without the
+// compression term's dead band 1.3e-4 and 3.7% (docs/isph.md).
+TEST_CASE("isph: a resting tank keeps rho g depth and stays still with the one-set-up candidate") {
+  check_resting_tank("isph_hydrostatic_one_set_up", test::isph_one_set_up());
 }
 
 namespace {

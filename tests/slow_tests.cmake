@@ -87,3 +87,9 @@ set_tests_properties("solid: an ISPH piston wave maker makes the waves of linear
                      PROPERTIES LABELS slow COST 100)
 set_tests_properties("container: water in a round tank stays at rest to t = 5 s (ISPH, a ring wall, known to fail)"
                      PROPERTIES LABELS slow COST 10)
+set_tests_properties("isph: the one-set-up candidate meets the dam-break criterion and runs through the impact"
+                     PROPERTIES LABELS slow COST 22)
+set_tests_properties("isph: a resting tank keeps rho g depth and stays still with the one-set-up candidate"
+                     PROPERTIES LABELS slow COST 12)
+set_tests_properties("energy: an ISPH sloshing tank with the one-set-up candidate never gains energy and keeps the period"
+                     PROPERTIES LABELS slow COST 12)

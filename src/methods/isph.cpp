@@ -21,6 +21,7 @@
 #include "methods/isph_spec.hpp"
 #include "methods/method.hpp"
 #include "methods/scene_particles.hpp"
+#include "systems/fluid/pair_collision.hpp"
 #include "systems/isph/fixed_pressure_velocity.hpp"
 #include "systems/isph/isph_parameters.hpp"
 #include "systems/isph/isph_predictor.hpp"
@@ -61,12 +62,16 @@ IsphParameters<D> isph_parameters(const Scene& s) {
                                                            : PressureGradientForm::Corrected;
   p.symmetric_gradient_det = mp.number("symmetric_gradient_det");
   p.uncorrected_divergence_det = mp.number("uncorrected_divergence_det");
-  p.compression_relaxation = mp.number("compression_relaxation");
+  // Fixed particles cannot answer a density error by moving: Eulerian rows keep the paper's
+  // divergence-free source.
+  p.compression_relaxation =
+      p.description == IsphDescription::Eulerian ? 0.0 : mp.number("compression_relaxation");
   p.compression_density = mp.text("compression_density") == "full_support" ? CompressionDensity::FullSupport
                                                                   : CompressionDensity::FirstShell;
   p.extrapolated_surface = mp.text("free_surface_pressure") == "extrapolated";
   p.wall_no_slip = !mp.flag("wall_slip");
-  p.wall_shepard = mp.text("wall_rows") == "shepard";
+  p.wall_shepard = mp.text("wall_rows") == "shepard" || mp.text("wall_rows") == "shepard_hydrostatic";
+  p.wall_shepard_hydrostatic = mp.text("wall_rows") == "shepard_hydrostatic";
   p.wall_adami = mp.text("wall_rows") == "adami";
   p.wall_acceleration = std::any_of(s.solids.begin(), s.solids.end(), [](const SolidSpec& b) { return b.moves(); });
   p.fixed_pressure = !s.fixed_pressure.empty();
@@ -151,6 +156,12 @@ std::vector<SystemPtr<D>> isph_pipeline(const Scene& s, const IsphParameters<D>&
   list.push_back(std::make_shared<LinearSolve<D>>(solver));
   list.push_back(std::make_shared<IsphPressureCorrection<D>>(p));
   if (p.fixed_pressure) list.push_back(std::make_shared<FixedPressureVelocity<D>>(p.domain));
+  // Pairs closing in below collision_distance collide (fluid pairs only: the walls have the guard
+  // below). The corrected gradient does not push a close pair apart (pair_collision.hpp).
+  const double collision = s.method_params.number("collision_distance");
+  if (p.description != IsphDescription::Eulerian && collision > 0)
+    list.push_back(std::make_shared<PairCollision<D>>(PairCollisionParameters{
+        "isph_collision", collision * p.spacing, 0.0, s.method_params.number("collision_restitution")}));
   if (p.description == IsphDescription::Ale && s.shifting_model == "density") {
     ShiftingParameters<D> sp{p.kernel, p.domain, p.spacing, p.rho0, s.shifting_coefficient, kTunedCfl,
                              p.reference_speed};

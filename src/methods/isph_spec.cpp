@@ -56,29 +56,34 @@ std::vector<KeySpec> isph_keys() {
           "isph: the walls' pressure rows. corrected and shepard keep one wall layer with normals and give "
           "each wetted wall particle a Neumann row (eq. 17, n . grad p = rho0/dt (v* - v_wall) . n) with the "
           "corrected gradient at the wall particle (the paper's) or with one-sided differences to the fluid "
-          "neighbours averaged with W (positive weights, no coupling between wall particles). adami keeps "
+          "neighbours averaged with W (positive weights, no coupling between wall particles); "
+          "shepard_hydrostatic as shepard with the gradient along the wall taken hydrostatic, rho0 (g - "
+          "a_w)_t, where shepard neglects it (a wall particle at the contact line then reads its fluid "
+          "neighbours' higher pressure as its own: a resting tank circulated at 0.08 m/s). adami keeps "
           "the layers that cover the kernel support, as wcsph does, and gives every wall particle with fluid "
           "in its support Adami's wall pressure as its row, p_w - sum_f s_f p_f = rho0 (g - a_w) . sum_f s_f "
           "(x_w - x_f) with s_f = W_wf / sum W; the fluid rows' divergence sees the walls moving at v_wall + "
           "dt g. The default, and the only choice, where a round or mesh container holds moving particles "
           "(one layer on a curve is not stable; docs/isph.md, \"Round and mesh containers\").",
-          {"corrected", "shepard", "adami"}),
+          {"corrected", "shepard", "shepard_hydrostatic", "adami"}),
       ranged({"compression_relaxation", K::Float, "", "0.0",
               "isph: alpha of the stabilised source (Asai et al. 2012): interior rows add alpha rho0 "
               "(<rho>_i/rho0 - 1)/tau^2 (compression_density says which density), tau the larger of dt and "
               "the step of the flow at rest at a CFL of 0.2 (0.2 d / sqrt(2 g H)); it keeps particles from "
               "pairing up in "
-              "violent flows; 0 turns it off (the paper's divergence-free source)."},
+              "violent flows, and the water's volume from drifting (the corrected gradient is not the "
+              "adjoint of the divergence, and the projection alone let a sloshing tank swell); 0 turns it "
+              "off (the paper's divergence-free source). Not used with description = \"eulerian\"."},
              0.0, 1.0),
       choice("compression_density", "\"first_shell\"",
-             "isph with compression_relaxation > 0: the density error the source answers. first_shell: eq. "
-             "19 over the lattice's first shell (which one wall layer fills), compression only; nothing "
-             "returns a slow dilation (a sloshing tank's water grew 0.3% over 200 periods). full_support: "
+             "isph with compression_relaxation > 0: the density error the source answers. full_support: "
              "where no surface particle lies in the support, the kernel sum over the whole support (the "
-             "wall's two missing layers completed) against the lattice's, both ways, a dilation counted at "
-             "most 1% (a deeper deficit is air in a splash); first_shell where the support reaches the "
-             "surface. Over 200 periods of the sloshing tank at H/d = 20 the energy's period mean then stays "
-             "within 0.70 J/m of its running minimum (2.37 with first_shell; docs/stability.md).",
+             "wall's two missing layers completed) against the lattice's, both ways, within 0.05% counted as "
+             "none (a resting tank's floor and corners read 1-4e-4) and a dilation at most 1% (a deeper "
+             "deficit is air in a splash); first_shell where the support reaches the surface. first_shell: "
+             "eq. 19 over the lattice's first shell (which one wall layer fills), compression only; nothing "
+             "returns a slow dilation (the one-set-up candidate's sloshing tank grew 258 J/m of potential "
+             "energy by t = 16 s without the full support's term; docs/isph.md).",
              {"first_shell", "full_support"}),
       ranged({"uncorrected_divergence_det", K::Float, "", "0.8",
               "isph: where det(M_i) (M_i = L_i^-1) is below this, the divergence of the pressure source is "
@@ -92,6 +97,18 @@ std::vector<KeySpec> isph_keys() {
            "interior has 0.98, a flat wall's first row 0.92, the box's corner particle 0.69. At 0.6 the a/d "
            "= 20 dam break throws 562 of its 800 particles over the walls by t = 2.2 s (0.7 and 0.8: 1)."},
           0.0, 1.0),
+      ranged({"collision_distance", K::Float, "spacing", "0.0",
+              "isph: fluid particles closer than this (times the spacing) that still approach each other "
+              "collide inelastically (the isph_collision system; src/systems/fluid/pair_collision.hpp). The "
+              "corrected gradient does not push a close pair apart: without it the dam break fails in the "
+              "fragmented flow after the plunging wave (a/d = 20: t = 1.37 s); with 0.8 it runs through. A fluid "
+              "at rest (pairs a spacing apart) never collides; a strained lattice does (the Taylor-Green "
+              "vortices lose energy). 0 (the default) leaves the system out; not used with description = "
+              "\"eulerian\"."},
+             0.0, 1.0),
+      ranged({"collision_restitution", K::Float, "", "0.2",
+              "isph: restitution coefficient e of the collision (MPS's)."},
+             0.0, 1.0),
       wall_slip_key(),
       hydrostatic_init_key()};
 }

@@ -71,6 +71,7 @@ struct IsphParameters {
   // with the Shepard one-sided difference to the fluid neighbours (positive weights, no wall-wall
   // coupling): see IsphPressureEquation.
   bool wall_shepard = false;
+  bool wall_shepard_hydrostatic = false;  // the Shepard row's gradient along the wall hydrostatic
   // Or the layers that cover the support with Adami's wall pressure as their rows (round and
   // mesh containers); a moving body's acceleration enters it (g - a_w).
   bool wall_adami = false;

@@ -59,7 +59,8 @@ class IsphPressureEquation final : public System<D> {
                     components::wall_normal, neighbours_resource, resources::dt),
               writes(pressure_system_resource, pressure_neighbours_resource),
               optional(p_.fixed_pressure, reads(components::fixed_pressure)),
-              optional(p_.wall_adami && p_.wall_acceleration, reads(components::body_acceleration))};
+              optional((p_.wall_adami || p_.wall_shepard_hydrostatic) && p_.wall_acceleration,
+                       reads(components::body_acceleration))};
   }
   Access access() const override { return io().access(); }
   void initialise(World<D>&, Resources& res) override {
@@ -68,10 +69,8 @@ class IsphPressureEquation final : public System<D> {
   }
 
   void run(SystemContext<D>& ctx) override {
-    // The step's own dt: the velocity-divergence source changes in proportion to the step (the
-    // gravity and the motion it integrates), unlike MPS's relaxed density error.
-    // fixed: Dirichlet values other than 0 (a neighbour without a row moves coefficient * value
-    // to b); acceleration: a moving body's, for Adami's rows. Empty where the scene has none.
+    // dt: the step's own (the source is the motion it integrates). fixed: Dirichlet values other
+    // than 0 (moved to b); acceleration: a moving body's, for the wall rows. Empty if none.
     auto [x, v, m, rho, kind, id, surface, surface_normal, normal, full, dt, sys, pressure_neighbours, fixed,
           acceleration] = io().fetch(ctx);
     const std::size_t n = x.size();
@@ -81,8 +80,7 @@ class IsphPressureEquation final : public System<D> {
     const double shell = 1.1 * std::sqrt(double(D)) * d;
     auto known = [&](std::size_t j) { return fixed.empty() || !std::isfinite(fixed[j]) ? 0.0 : fixed[j]; };
 
-    // Which particles carry an unknown: interior fluid, surface fluid whose pressure is
-    // extrapolated, and wetted walls.
+    // Which particles carry an unknown: interior fluid, extrapolated surface fluid, wetted walls.
     unknown_.assign(n, 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](auto range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
@@ -277,10 +275,8 @@ class IsphPressureEquation final : public System<D> {
           }
         } else if (p_.wall_adami || p_.wall_shepard) {
           // Both rows are p_i - sum_f s_f p_f = (a pressure difference), s_f = V_f W_if / sum V W
-          // over the fluid neighbours, scaled by 1/h^2 as the others: diagonally dominant, and
-          // wall rows do not couple to each other (the corrected gradient along a wall carried an
-          // odd-even mode). The entries, and lever = sum_f s_f (x_i - x_f) (its part along the
-          // normal summed as such, for the Shepard row):
+          // over the fluid neighbours, scaled by 1/h^2: diagonally dominant, no wall-wall coupling
+          // (the corrected gradient along a wall carried an odd-even mode); lever = sum_f s_f (x_i - x_f).
           double total = 0, lever_n = 0;
           Vec<D> lever = Vec<D>::Zero();
           for (std::size_t k = 0; k < nb.size(); ++k)
@@ -299,15 +295,20 @@ class IsphPressureEquation final : public System<D> {
               else
                 from_known += s / (h * h) * known(j);
             }
+          const Vec<D> felt = acceleration.empty() ? p_.gravity : Vec<D>(p_.gravity - acceleration[i]);
           if (p_.wall_adami) {
             // Adami's wall pressure (seed 002 eq. 27): rho0 (g - a_w) . lever. Exact for a
             // hydrostatic field, on every layer a fluid support reaches.
-            const Vec<D> felt = acceleration.empty() ? p_.gravity : Vec<D>(p_.gravity - acceleration[i]);
             rhs = p_.rho0 * felt.dot(lever) / (h * h);
           } else {
-            // n . grad p = rho0/dt (v*_i - v_wall) . n as a one-sided difference to each fluid
-            // neighbour, p_i - p_j = (n . (x_i - x_j)) n . grad p, averaged with s_j.
-            rhs = p_.rho0 / dt * (v_star_[i] - v[i]).dot(normal[i]) * lever_n / (h * h);
+            // p_i - p_j = (x_i - x_j) . grad p averaged with s_j: along n eq. 17's rho0/dt (v*_i -
+            // v_wall) . n, along the wall 0 or (shepard_hydrostatic) rho0 (g - a_w)_t. With 0 a wall
+            // particle at the contact line reads its fluid neighbours' (all below it) higher pressure
+            // as its own: a resting tank circulated at 0.08 m/s (H/d = 40; hydrostatic: 1.5e-4 m/s).
+            const Vec<D> along =
+                p_.wall_shepard_hydrostatic ? Vec<D>(felt - normal[i].dot(felt) * normal[i]) : Vec<D>::Zero();
+            rhs = (p_.rho0 / dt * (v_star_[i] - v[i]).dot(normal[i]) * lever_n + p_.rho0 * along.dot(lever)) /
+                  (h * h);
           }
         } else {
           gk = corrected_gradient();
