@@ -15,7 +15,8 @@ inline std::vector<std::string> isph_one_set_up(std::vector<std::string> sets = 
                            "method.viscous_laplacian=\"corrected\"", "method.pressure_gradient=\"corrected\"",
                            "solver.tolerance=1e-8", "method.collision_distance=0.8",
                            "method.wall_rows=\"shepard_hydrostatic\"", "method.compression_relaxation=0.5",
-                           "method.compression_density=\"full_support\"", "shifting.model=\"fickian\""});
+                           "method.compression_density=\"full_support\"", "method.compression_dead_band=5e-4",
+                           "shifting.model=\"fickian\""});
   return sets;
 }
 

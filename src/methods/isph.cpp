@@ -68,6 +68,7 @@ IsphParameters<D> isph_parameters(const Scene& s) {
       p.description == IsphDescription::Eulerian ? 0.0 : mp.number("compression_relaxation");
   p.compression_density = mp.text("compression_density") == "full_support" ? CompressionDensity::FullSupport
                                                                   : CompressionDensity::FirstShell;
+  p.compression_dead_band = mp.number("compression_dead_band");
   p.extrapolated_surface = mp.text("free_surface_pressure") == "extrapolated";
   p.wall_no_slip = !mp.flag("wall_slip");
   p.wall_shepard = mp.text("wall_rows") == "shepard" || mp.text("wall_rows") == "shepard_hydrostatic";

@@ -16,12 +16,14 @@
 //                 returned. A dilation counts at most kDilationCap: a deeper deficit is air in a
 //                 splash, and pulling it together clumped the spray (the a/d = 20 dam break lost 9
 //                 of 800 particles over the walls uncapped, none capped). A support that reaches
-//                 the surface is short by geometry: first_shell there. Within kDeadBand of the
-//                 lattice's sum the error counts as 0: with tau of about a step (0.2 d / sqrt(2 g H))
-//                 the term is stiff, and a resting tank's floor rows and corners, 1-4e-4 off the
-//                 lattice with their wall copies, then held a standing velocity divergence against
-//                 the wall rows (1.3e-4 sqrt(g H) of motion, and the pressure 3.7% off rho g depth
-//                 in a step shorter than the last, when the two no longer cancelled).
+//                 the surface is short by geometry: first_shell there. Within the dead band
+//                 (`compression_dead_band`) of the lattice's sum the error counts as 0: with tau of
+//                 about a step (0.2 d / sqrt(2 g H)) the term is stiff, and with the corrected
+//                 gradient a resting tank's floor rows, a few 1e-4 off the lattice, held a standing
+//                 velocity divergence against the wall rows (1.3e-4 sqrt(g H) of motion, and the
+//                 pressure 3.7% off rho g depth after a step shorter than the last, when the next
+//                 source no longer cancelled it). It lets the volume wander within the band: the
+//                 200-period sloshing tank's period means by about 1-3 J/m.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -41,12 +43,13 @@ template <int D>
 class CompressionError {
  public:
   static constexpr double kDilationCap = 0.01;
-  static constexpr double kDeadBand = 5e-4;
 
   // walls_complete: the walls have their layers (wall_rows = "adami"), no copies are needed.
+  // dead_band: a full-support error within it counts as 0 (`compression_dead_band`).
   CompressionError(const Kernel<D>& kernel, double spacing, CompressionDensity measure,
-                   bool walls_complete = false)
+                   bool walls_complete = false, double dead_band = 0.0)
       : walls_complete_(walls_complete),
+        dead_band_(dead_band),
         kernel_(kernel),
         spacing_(spacing),
         shell_(1.1 * std::sqrt(double(D)) * spacing),
@@ -72,7 +75,7 @@ class CompressionError {
     }
     if (complete) {
       const double e = whole / support_sum_ - 1.0;
-      return std::max(e > kDeadBand ? e - kDeadBand : e < -kDeadBand ? e + kDeadBand : 0.0, -kDilationCap);
+      return std::max(e > dead_band_ ? e - dead_band_ : e < -dead_band_ ? e + dead_band_ : 0.0, -kDilationCap);
     }
     return std::max(shell / shell_sum_ - 1.0, 0.0);
   }
@@ -113,6 +116,7 @@ class CompressionError {
   }
 
   bool walls_complete_;
+  double dead_band_;
   Kernel<D> kernel_;
   double spacing_, shell_, shell_sum_, support_sum_;
   CompressionDensity measure_;

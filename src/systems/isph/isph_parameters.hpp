@@ -64,6 +64,7 @@ struct IsphParameters {
   // alpha of the stabilised source (Asai et al. 2012), and the density error it answers.
   double compression_relaxation = 0.0;
   CompressionDensity compression_density = CompressionDensity::FirstShell;
+  double compression_dead_band = 0;  // full_support: an error within it counts as 0
   double relaxation_time = 0.0;      // kTunedCfl d / max(sqrt(2 g H), initial speed)
   bool extrapolated_surface = true;  // p = 0 half a spacing outside a surface particle
   bool wall_no_slip = true;

@@ -50,7 +50,8 @@ template <int D>
 class IsphPressureEquation final : public System<D> {
  public:
   explicit IsphPressureEquation(const IsphParameters<D>& p)
-      : p_(p), compression_error_(p.kernel, p.spacing, p.compression_density, p.wall_adami) {}
+      : p_(p),
+        compression_error_(p.kernel, p.spacing, p.compression_density, p.wall_adami, p.compression_dead_band) {}
   std::string name() const override { return "ppe_assembly"; }
   // id: to name a particle whose row is bad.
   auto io() const {
