@@ -9,16 +9,7 @@
 using namespace ryushi;
 
 TEST_CASE("elastic: bad solid input is an error at the key") {
-  const std::string head = R"([scene]
-dimension = 2
-[domain]
-min = [-0.2, -0.2]
-max = [1.2, 1.2]
-[particles]
-spacing = 0.05
-[time]
-end = 0.1
-)";
+  const std::string head = test::small_scene_head();
   auto body = [&](const std::string& keys, const std::string& rest = "") {
     return test::scene_error(head + rest +
                              "[[elastic]]\nmin = [0.0, 0.0]\nmax = [0.5, 0.5]\ndensity = 1000.0\n" + keys);

@@ -241,16 +241,7 @@ TEST_CASE(
 }
 
 TEST_CASE("heat: bad thermal and rheology input is an error at the key") {
-  const std::string head = R"([scene]
-dimension = 2
-[domain]
-min = [-0.2, -0.2]
-max = [1.2, 1.2]
-[particles]
-spacing = 0.05
-[time]
-end = 0.1
-)";
+  const std::string head = test::small_scene_head();
   const std::string box =
       "[[fluid]]\nmin = [0.0, 0.0]\nmax = [0.5, 0.5]\n[[wall]]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n";
   auto material = [&](const std::string& keys, const std::string& rest = "") {

@@ -46,6 +46,21 @@ inline void write_text(const fs::path& p, const std::string& text) {
   std::ofstream(p) << text;
 }
 
+// The head of a small 2D scene ([scene], [domain], [particles], [time]) that the bad-input tests
+// complete with the blocks under test.
+inline std::string small_scene_head() {
+  return R"([scene]
+dimension = 2
+[domain]
+min = [-0.2, -0.2]
+max = [1.2, 1.2]
+[particles]
+spacing = 0.05
+[time]
+end = 0.1
+)";
+}
+
 // A 2D scene in the unit box with one fluid block and no walls; `extra` is appended (TOML).
 inline std::string block_scene(const std::string& fluid_min, const std::string& fluid_max, double end,
                                const std::string& extra = "") {
