@@ -53,8 +53,7 @@ class IsphPressureEquation final : public System<D> {
       : p_(p),
         compression_error_(p.kernel, p.spacing, p.compression_density, p.wall_adami, p.compression_dead_band) {}
   std::string name() const override { return "ppe_assembly"; }
-  // id: to name a particle whose row is bad.
-  auto io() const {
+  auto io() const {  // id: to name a particle whose row is bad
     return Io{reads(components::position, components::velocity, components::mass, components::density,
                     components::kind, components::id, components::free_surface, components::surface_normal,
                     components::wall_normal, neighbours_resource, resources::dt),
