@@ -162,7 +162,8 @@ std::vector<SystemPtr<D>> isph_pipeline(const Scene& s, const IsphParameters<D>&
   const double collision = s.method_params.number("collision_distance");
   if (p.description != IsphDescription::Eulerian && collision > 0)
     list.push_back(std::make_shared<PairCollision<D>>(PairCollisionParameters{
-        "isph_collision", collision * p.spacing, 0.0, s.method_params.number("collision_restitution")}));
+        "isph_collision", collision * p.spacing, 0.0, s.method_params.number("collision_restitution"),
+        s.method_params.text("collision_approach") == "beyond_resolved_flow"}));
   if (p.description == IsphDescription::Ale && s.shifting_model == "density") {
     ShiftingParameters<D> sp{p.kernel, p.domain, p.spacing, p.rho0, s.shifting_coefficient, kTunedCfl,
                              p.reference_speed};

@@ -117,6 +117,13 @@ std::vector<KeySpec> isph_keys() {
       ranged({"collision_restitution", K::Float, "", "0.2",
               "isph: restitution coefficient e of the collision (MPS's)."},
              0.0, 1.0),
+      choice("collision_approach", "\"full\"",
+             "isph with collision_distance > 0: which part of a close fluid pair's approach collides. full: all "
+             "of it (MPS's model). beyond_resolved_flow: only what the velocity gradient fitted over the pair's "
+             "surroundings does not explain, so a smooth strain that brings pairs close (a stretched lattice "
+             "at a stagnation point) is left alone; where the surroundings cannot fit a gradient (a drop of a "
+             "few particles) all of it (src/systems/fluid/pair_collision.hpp).",
+             {"full", "beyond_resolved_flow"}),
       wall_slip_key(),
       hydrostatic_init_key()};
 }
