@@ -221,7 +221,7 @@ TEST_CASE("expression: Taylor-Green vortices set up by formulas decay at the vis
 TEST_CASE("expression: Taylor-Green vortices keep their energy with collisions beyond the resolved flow") {
   const std::string collisions = " --set time.end=0.2 --set method.collision_distance=0.8";
   double end = 0;
-  CHECK(taylor_green_energy_error(collisions + " --set method.collision_approach=beyond_resolved_flow", 0.2, end) <
-        0.01);
+  CHECK(taylor_green_energy_error(collisions + " --set method.collision_approach=beyond_resolved_flow", 0.2,
+                                  end) < 0.01);
   CHECK(taylor_green_energy_error(collisions, 0.2, end) > 0.02);
 }

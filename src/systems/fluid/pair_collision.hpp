@@ -23,11 +23,10 @@
 // themselves close: a clump is judged against its surroundings, not against itself. Where the
 // surroundings cannot fit a gradient (a drop of a few particles, a thin jet: the fit's smallest
 // moment below a quarter of its mean) G = 0 and the whole approach counts, as without the option.
-#include <string>
-#include <vector>
-
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <string>
+#include <vector>
 
 #include "ecs/io.hpp"
 #include "systems/loops/for_each_particle.hpp"
@@ -36,10 +35,10 @@
 namespace ryushi {
 
 struct PairCollisionParameters {
-  std::string name;       // the system's name in the timings: mps_collision, isph_collision
-  double fluid_distance;  // between fluid particles (m)
-  double wall_distance;   // between a fluid and a wall or dummy particle (m); 0: none
-  double restitution;     // e
+  std::string name;                   // the system's name in the timings: mps_collision, isph_collision
+  double fluid_distance;              // between fluid particles (m)
+  double wall_distance;               // between a fluid and a wall or dummy particle (m); 0: none
+  double restitution;                 // e
   bool beyond_resolved_flow = false;  // collide only with the approach the velocity gradient does not explain
 };
 
