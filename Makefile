@@ -40,7 +40,7 @@ build: deps
 
 # The run, then its last frame as a picture (out/dam_break_2d/render/pressure_NNNNN.png).
 run: build py-deps
-	$(BUILD)/ryushi run scenes/dam_break_2d.toml --out out/dam_break_2d
+	$(BUILD)/ryushi run scenes/dam_break_2d.toml --out out/dam_break_2d --overwrite
 	$(BUILD)/ryushi render out/dam_break_2d --frames last
 
 test: build
@@ -72,7 +72,7 @@ bench: build py-deps
 
 plots: build py-deps
 	mkdir -p docs/img
-	test -f out/dam_break_2d/probes.csv || $(BUILD)/ryushi run scenes/dam_break_2d.toml --out out/dam_break_2d --quiet
+	test -f out/dam_break_2d/probes.csv || $(BUILD)/ryushi run scenes/dam_break_2d.toml --out out/dam_break_2d --quiet --overwrite
 	/usr/bin/python3 tools/plot_dam_break.py out/dam_break_2d docs/img/dam_break_front.png
 	@# every sweep's plot from its table (ryushi sweep draws it too; this redraws after a change to the tool)
 	@for csv in $$(find out -name sweep.csv 2>/dev/null); do \

@@ -1,6 +1,7 @@
 // Never lose a run (issue 9): a run killed with SIGKILL at random moments and resumed from its
 // checkpoint, again and again, ends bit-identical to a run that was never stopped (same thread
-// count), and every frame on disk opens. Resume refuses a missing checkpoint and a changed scene.
+// count), and every frame on disk opens. Resume refuses a missing checkpoint, keys that built the
+// state, and frames of another run; a run refuses a folder of another run's files.
 #include <doctest/doctest.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -128,7 +129,10 @@ TEST_CASE("checkpoint: a run killed at random moments and resumed ends bit-ident
   CHECK(test::read_text(full / "particles.xdmf") == test::read_text(part / "particles.xdmf"));
 }
 
-TEST_CASE("checkpoint: resume refuses a missing checkpoint and a scene changed since, with exit code 2") {
+TEST_CASE(
+    "checkpoint: resume refuses a missing checkpoint, runs from its own copy of the scene, and takes --set "
+    "only "
+    "for keys that can change mid-run") {
   const std::string bin = RYUSHI_BINARY;
   auto dir = test::scratch("checkpoint_refusals");
   auto r = test::run_command(bin + " resume " + (dir / "nothing").string());
@@ -145,10 +149,73 @@ TEST_CASE("checkpoint: resume refuses a missing checkpoint and a scene changed s
   auto more = test::run_command(bin + " resume " + out + " --end-time 0.03 --quiet");
   CHECK(more.code == kExitDone);
   CHECK(test::json_number(test::read_text(dir / "out" / "summary.json"), "simulated_time") == doctest::Approx(0.03));
-  test::write_text(scene, test::read_text(scene) + "\n# edited\n");
-  auto changed = test::run_command(bin + " resume " + out + " --quiet");
-  CHECK(changed.code == kExitBadInput);
-  CHECK_MESSAGE(changed.output.find("changed since the checkpoint") != std::string::npos, changed.output);
+  // The checkpoint holds the scene's text: a scene file edited, or gone, does not matter (issue 51:
+  // resume needed the file at its absolute path, byte-identical).
+  test::write_text(scene, "this is not a scene any more\n");
+  auto edited = test::run_command(bin + " resume " + out + " --end-time 0.04 --quiet");
+  CHECK_MESSAGE(edited.code == kExitDone, edited.output);
+  fs::remove(scene);
+  // A key that is safe mid-run: a smaller CFL for the rest, recorded for the next resume.
+  auto gone = test::run_command(bin + " resume " + out + " --end-time 0.05 --set time.cfl=0.1 --quiet");
+  CHECK_MESSAGE(gone.code == kExitDone, gone.output);
+  auto summary = test::read_text(dir / "out" / "summary.json");
+  CHECK(test::json_number(summary, "simulated_time") == doctest::Approx(0.05));
+  // One that built the state is refused, naming the ones that can change.
+  auto refused = test::run_command(bin + " resume " + out + " --end-time 0.06 --set particles.spacing=0.01");
+  CHECK(refused.code == kExitBadInput);
+  CHECK_MESSAGE(refused.output.find("--set particles.spacing=0.01: not a key a resumed run can change") !=
+                    std::string::npos,
+                refused.output);
+  CHECK(refused.output.find("time.cfl") != std::string::npos);
+  CHECK(test::read_text(dir / "out" / "summary.json") == summary);  // nothing written
+}
+
+TEST_CASE(
+    "checkpoint: a run refuses a folder with another run's files unless --overwrite, and resume refuses "
+    "frames of another run") {
+  const std::string bin = RYUSHI_BINARY;
+  auto dir = test::scratch("checkpoint_folders");
+  auto scene = dir / "scene.toml";
+  test::write_text(
+      scene, test::block_scene(
+                 "[0.3, 0.3]", "[0.5, 0.5]", 0.02,
+                 "[[wall]]\nmin = [0.3, 0.3]\nmax = [0.7, 0.7]\n[output]\ncheckpoint_interval = 0.01\n"));
+  const auto out = dir / "out";
+  REQUIRE(test::run_command(bin + " run " + scene.string() + " --out " + out.string() + " --quiet").code ==
+          kExitDone);
+  const auto first = test::read_text(out / "summary.json");
+  const auto first_id = test::json_raw(first, "run_id");
+  // The issue's case: a fresh run into the folder of an earlier one left its checkpoint, which a
+  // later resume mixed with the new run's frames. Now refused, and nothing is written.
+  auto again = test::run_command(bin + " run " + scene.string() + " --out " + out.string() + " --quiet");
+  CHECK(again.code == kExitBadInput);
+  CHECK_MESSAGE(again.output.find("holds another run's files (summary.json") != std::string::npos,
+                again.output);
+  CHECK(again.output.find("--overwrite") != std::string::npos);
+  CHECK(again.output.find("ryushi resume") != std::string::npos);
+  CHECK(test::read_text(out / "summary.json") == first);
+  // A user's own file in the folder is kept by --overwrite; the run's files are replaced.
+  test::write_text(out / "notes.txt", "mine\n");
+  auto replaced = test::run_command(bin + " run " + scene.string() + " --out " + out.string() +
+                                    " --quiet --overwrite --set output.checkpoint_interval=0");
+  CHECK(replaced.code == kExitDone);
+  CHECK(fs::exists(out / "notes.txt"));
+  CHECK_FALSE(fs::exists(out / "checkpoint.h5"));  // the earlier run's is gone with it
+  CHECK(test::json_raw(test::read_text(out / "summary.json"), "run_id") != first_id);
+  CHECK(test::run_command(bin + " resume " + out.string()).code == kExitBadInput);  // no checkpoint to mix
+  // A checkpointed run whose frame 1 is replaced by another run's: resume names it and stops.
+  const auto other = dir / "other";
+  REQUIRE(test::run_command(bin + " run " + scene.string() + " --out " + other.string() + " --quiet").code ==
+          kExitDone);
+  REQUIRE(
+      test::run_command(bin + " run " + scene.string() + " --out " + out.string() + " --quiet --overwrite")
+          .code == kExitDone);
+  fs::copy_file(other / "frames" / "frame_00001.h5", out / "frames" / "frame_00001.h5",
+                fs::copy_options::overwrite_existing);
+  auto mixed = test::run_command(bin + " resume " + out.string() + " --end-time 0.03");
+  CHECK(mixed.code == kExitBadInput);
+  CHECK_MESSAGE(mixed.output.find("frame_00001.h5 belongs to another run") != std::string::npos,
+                mixed.output);
 }
 
 TEST_CASE("checkpoint: a full disk stops the run with exit code 4 and a clear message, the frames so far whole") {

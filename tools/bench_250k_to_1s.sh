@@ -31,7 +31,7 @@ started=$(date -u +%FT%TZ) before=$(state)
 if [ -f "$out/checkpoint.h5" ] && ! grep -q '"status": "completed"' "$out/summary.json" 2>/dev/null; then
   "$build/ryushi" resume "$out" --threads 2
 elif [ ! -f "$out/summary.json" ] || ! grep -q '"status": "completed"' "$out/summary.json"; then
-  "$build/ryushi" run "scenes/${scene[$method]}" --out "$out" --threads 2 --set particles.spacing=0.0007 \
+  "$build/ryushi" run "scenes/${scene[$method]}" --out "$out" --overwrite --threads 2 --set particles.spacing=0.0007 \
     --set time.end=1.0 --set output.interval=0.25 --set output.probe_interval=0.002 --checkpoint-interval 0.05
 fi || true  # an interrupted segment (exit 130) is logged and reported like a finished one
 echo "$started,$(date -u +%FT%TZ),$(md5sum "$build/ryushi" | cut -c1-12),$before,$(state)" >> "$out/segments.csv"

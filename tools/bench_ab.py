@@ -19,6 +19,7 @@ import argparse
 import json
 import os
 import statistics
+import shutil
 import subprocess
 import tempfile
 
@@ -27,6 +28,7 @@ def run(binary, scene, sets, threads, out):
     cmd = [binary, "run", scene, "--out", out, "--threads", str(threads), "--quiet", "--set", "output.interval=1e9"]
     for s in sets:
         cmd += ["--set", s]
+    shutil.rmtree(out, ignore_errors=True)  # a run refuses a directory with another run's files
     subprocess.run(cmd, check=True)
     summary = json.load(open(os.path.join(out, "summary.json")))
     profile = json.load(open(os.path.join(out, "profile.json")))

@@ -21,6 +21,7 @@ minutes, and a fixed order would charge the drift to whichever configuration run
 import argparse
 import json
 import os
+import shutil
 import subprocess
 import tempfile
 
@@ -40,6 +41,7 @@ def run(args, sets, out, steps):
            "--set", "output.interval=100", "--set", f"solver.tolerance={args.tolerance}"]
     for s in sets:
         cmd += ["--set", s]
+    shutil.rmtree(out, ignore_errors=True)  # a run refuses a directory with another run's files
     subprocess.run(cmd, check=True)
     with open(os.path.join(out, "profile.json")) as f:
         profile = json.load(f)

@@ -2,6 +2,7 @@
 
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -50,7 +51,8 @@ int run_loaded(const RunOptions& opt, const fs::path& resume = {}, int checkpoin
   int code = kExitInternal;
   try {
     load_plugins(opt.plugins, opt.scene);
-    Scene scene = load_scene(opt.scene, with_end_time(opt));
+    Scene scene =
+        load_scene(opt.scene, with_end_time(opt), opt.scene_text.empty() ? nullptr : &opt.scene_text);
     if (checkpoint_dimension && scene.dimension != checkpoint_dimension)
       throw SceneError(resume.string() + ": the checkpoint is of another dimension");
     code = scene.dimension == 2 ? run_dim<2>(scene, opt, resume) : run_dim<3>(scene, opt, resume);
@@ -77,6 +79,18 @@ int run_scene(const RunOptions& opt) {
   return run_loaded(opt);
 }
 
+const std::vector<std::string>& resumable_keys() {
+  static const std::vector<std::string> keys{"time.end",
+                                             "time.cfl",
+                                             "time.dt",
+                                             "time.dt_min",
+                                             "time.max_steps",
+                                             "output.interval",
+                                             "output.probe_interval",
+                                             "output.checkpoint_interval"};
+  return keys;
+}
+
 int resume_run(const ResumeOptions& ro) {
   const fs::path file = fs::path(ro.out_dir) / "checkpoint.h5";
   Checkpoint c;
@@ -85,11 +99,20 @@ int resume_run(const ResumeOptions& ro) {
       throw std::runtime_error(
           file.string() + ": no checkpoint (run with [output] checkpoint_interval or --checkpoint-interval)");
     c = read_checkpoint_header(file);
-    if (!fs::exists(c.scene.path))
-      throw std::runtime_error(file.string() + ": the scene file " + c.scene.path + " is gone");
-    if (read_file(c.scene.path) != c.scene.text)
-      throw std::runtime_error(file.string() + ": the scene file " + c.scene.path +
-                               " changed since the checkpoint");
+    // The checkpoint holds the scene's text: the file may have changed or gone since.
+    for (auto& set : ro.sets) {
+      const auto key = set.substr(0, set.find('='));
+      const auto& allowed = resumable_keys();
+      if (set.find('=') == std::string::npos ||
+          std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+        std::string list;
+        for (auto& k : allowed) list += (list.empty() ? "" : ", ") + k;
+        throw std::runtime_error("--set " + set +
+                                 ": not a key a resumed run can change (its state was built with "
+                                 "the rest); these can: " +
+                                 list);
+      }
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ryushi: %s\n", e.what());
     return kExitBadInput;
@@ -99,7 +122,9 @@ int resume_run(const ResumeOptions& ro) {
   opt.out_dir = ro.out_dir;
   opt.threads = ro.threads;
   opt.quiet = ro.quiet;
-  opt.sets = c.scene.overrides;  // the original run's, its end time included
+  opt.sets = c.scene.overrides;  // the original run's, its end time included, then the new ones
+  opt.sets.insert(opt.sets.end(), ro.sets.begin(), ro.sets.end());
+  opt.scene_text = c.scene.text;
   if (ro.end_time) opt.end_time = ro.end_time;
   if (ro.checkpoint_interval) opt.checkpoint_interval = ro.checkpoint_interval;
   opt.plugins = ro.plugins;

@@ -33,6 +33,7 @@ Checkpoint Runner<D>::checkpoint_state() const {
   c.scene.overrides.push_back(b);
   c.scene.version = "ryushi 0.1.0";
   c.scene.dimension = D;
+  c.scene.run_id = run_id_;
   c.frames = frames_;
   c.probe_rows = probe_rows_;
   if (res_.has(cell_grid_resource<D>.name)) {  // a method without a neighbour search has none
@@ -72,6 +73,25 @@ void Runner<D>::restore() {
   profiler_.restore(c.profile, k.profile_step_total_s);
   frames_ = c.frames;
   probe_rows_ = c.probe_rows;
+  // The frames the checkpoint lists must be this run's: a fresh run into the folder since (or a
+  // copy of another run's frames) would otherwise mix two runs in one particles.xdmf.
+  run_id_ = c.scene.run_id;
+  const fs::path dir = resume_.parent_path();
+  for (auto& f : frames_) {
+    const fs::path file = dir / f.file;
+    if (!fs::exists(file))
+      throw SceneError(resume_.string() + ": its frame " + file.string() + " is missing");
+    std::uint64_t id = 0;
+    try {
+      id = frame_run_id(file);
+    } catch (const std::runtime_error& e) {
+      throw SceneError(resume_.string() + ": " + e.what());
+    }
+    if (run_id_ && id != run_id_)
+      throw SceneError(resume_.string() + ": its frame " + file.string() +
+                       " belongs to another run (run id " + run_id_hex(id) + ", the checkpoint's " +
+                       run_id_hex(run_id_) + ")");
+  }
   restored_order_ = c.cell_order;
   auto& pipeline = scheduler_->pipeline();
   if (c.system_states.size() != pipeline.size())

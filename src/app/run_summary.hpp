@@ -73,6 +73,15 @@ void Runner<D>::write_summary(const std::string& status, const std::string& mess
   w.key("metrics").begin_object();
   for (auto& [name, value] : metrics()) w.key(name).value(value);
   w.end_object();
+  w.key("run_id").value(run_id_hex(run_id_));
+  w.key("health").begin_object();
+  w.key("action").value(std::string(scene_.health.warn ? "warn" : "stop"));
+  w.key("pressure_scale").value(health_.pressure_scale());
+  w.key("energy_scale").value(health_.energy_scale());  // 0: the energy is not checked
+  w.key("warnings").begin_array();
+  for (auto& text : health_warnings_) w.value(text);
+  w.end_array();
+  w.end_object();
   if (res_.has(solve_statistics_resource.name)) {
     const auto& st = res_.get(solve_statistics_resource);
     w.key("linear_solver").begin_object();

@@ -20,6 +20,7 @@
 
 #include "app/exit_codes.hpp"
 #include "app/health_check.hpp"
+#include "app/health_monitor.hpp"
 #include "app/progress.hpp"
 #include "app/run.hpp"
 #include "app/run_files.hpp"
@@ -54,7 +55,7 @@ class Runner {
       : scene_(scene), opt_(opt), profiler_(opt.trace), resume_(std::move(resume)) {
     checkpoint_interval_ = opt.checkpoint_interval ? *opt.checkpoint_interval : scene.checkpoint_interval;
     // The text the run was started from, once: checkpoints record it and resume compares it.
-    if (checkpoint_interval_ > 0) scene_text_ = read_file(scene.path);
+    if (checkpoint_interval_ > 0) scene_text_ = scene.text;
   }
 
   // Everything that can reject the input, before any file is written.
@@ -93,13 +94,24 @@ class Runner {
     if (h.index != HealthCheck<D>::kNone)
       throw SceneError(scene_.path + ": the initial state is invalid: particle id " +
                        std::to_string(world_.column(components::id)[h.index]) + " " + h.problem);
+    // After a resume the scales and the energy's start are the restored state's.
+    health_.prepare(scene_, world_, context_);
+    // A fresh run into a directory that holds another run's files: that run's checkpoint would
+    // later resume into this run's frames (issue 51: frames of two scenes, a particles.xdmf
+    // pointing at missing files).
+    out_ = opt_.out_dir.empty() ? fs::path("out") / scene_.name : fs::path(opt_.out_dir);
+    if (resume_.empty() && !opt_.overwrite)
+      if (auto found = run_files_in(out_); !found.empty())
+        throw SceneError(out_.string() + ": holds another run's files (" + found +
+                         "): pass --overwrite to replace them, or continue that run with `ryushi resume " +
+                         out_.string() + "`");
   }
 
   int run() {
-    out_ = opt_.out_dir.empty() ? fs::path("out") / scene_.name : fs::path(opt_.out_dir);
+    if (resume_.empty() && opt_.overwrite) remove_run_files(out_);
     fs::create_directories(out_ / "frames");
-    // A fresh run removes a previous run's frames; a resumed one those written after its
-    // checkpoint (a killed run may have got further).
+    // A resumed run removes the frames written after its checkpoint (a killed run may have got
+    // further); a fresh one finds none (refused or cleared in prepare()).
     std::set<std::string> kept;
     for (auto& f : frames_) kept.insert(fs::path(f.file).filename().string());
     for (auto& e : fs::directory_iterator(out_ / "frames"))
@@ -116,6 +128,7 @@ class Runner {
     slot_probes_ = profiler_.slot("probes");
     slot_reorder_ = profiler_.slot("reorder_by_cell");
     slot_health_ = profiler_.slot("health_check");
+    slot_monitor_ = profiler_.slot("health_monitor");
     if (!opt_.quiet) {
       const auto& kind = world_.column(components::kind);
       const auto elastic = static_cast<std::size_t>(std::count(kind.begin(), kind.end(), kElastic));
@@ -253,6 +266,13 @@ class Runner {
     time_ = lands ? target : time_ + dt_used_;  // frame times exactly as asked, no round-off
     res_.get(resources::time) = time_;
     ++step_;
+    check_state();
+    check_health();
+  }
+
+  // After every step: a particle that is not a number or left the box (health_check.hpp); with
+  // outflow = "remove" the fluid that left is erased first.
+  void check_state() {
     Profiler::Scope t(profiler_, slot_health_);
     if (scene_.outflow_removes) remove_escaped_fluid();
     HealthCheck<D> h;
@@ -266,6 +286,22 @@ class Runner {
       for (int a = 0; a < D; ++a) m << (a ? ", " : "") << x[a];
       m << ") after system '" << scheduler_->last_writer(h.column) << "'";
       throw NumericalFailure(m.str());
+    }
+  }
+
+  // [health]: the physical checks (health_monitor.hpp), timed on their own.
+  void check_health() {
+    Profiler::Scope t(profiler_, slot_monitor_);
+    if (auto finding = health_.check(world_, time_)) {
+      std::ostringstream m;
+      m << "step " << step_ << " (t = " << time_ << " s): health check '" << finding->check
+        << "': " << finding->message << " after system '" << scheduler_->last_writer(finding->column)
+        << "' (likely: " << finding->cause << ")";
+      if (!scene_.health.warn) throw NumericalFailure(m.str());
+      if (health_warned_.insert(finding->check).second) {  // [health] action = "warn": once per check
+        spdlog::warn("{}", m.str());
+        health_warnings_.push_back(m.str());
+      }
     }
   }
 
@@ -316,7 +352,7 @@ class Runner {
     Profiler::Scope t(profiler_, slot_output_);
     char name[64];
     std::snprintf(name, sizeof name, "frames/frame_%05zu.h5", frames_.size());
-    auto fields = write_frame<D>(out_ / name, world_, frame_fields_, time_, step_);
+    auto fields = write_frame<D>(out_ / name, world_, frame_fields_, time_, step_, run_id_);
     frames_.push_back({name, time_, world_.size(), fields});
     write_text_atomic(out_ / "particles.xdmf", xdmf_document(frames_));
     if (!scene_.probes.empty())
@@ -368,6 +404,9 @@ class Runner {
   std::string method_summary_;
   std::vector<std::string> frame_fields_;  // [output] fields and what the method adds (temperature, ...)
   bool density_may_vanish_ = false;
+  HealthMonitor<D> health_;
+  std::set<std::string> health_warned_;       // the checks that warned (action = "warn")
+  std::vector<std::string> health_warnings_;  // their messages, for summary.json
   fs::path out_;
   std::vector<FrameRecord> frames_;
   std::vector<std::vector<double>> probe_rows_;
@@ -377,10 +416,11 @@ class Runner {
   std::size_t removed_ = 0;  // fluid particles erased by outflow = "remove"
   double removed_mass_ = 0;
   double search_cell_ = 0;  // MethodSetup::search_cell
-  std::size_t slot_output_ = 0, slot_probes_ = 0, slot_reorder_ = 0, slot_health_ = 0;
+  std::size_t slot_output_ = 0, slot_probes_ = 0, slot_reorder_ = 0, slot_health_ = 0, slot_monitor_ = 0;
   fs::path resume_;
   std::vector<std::uint32_t> restored_order_;
   std::string scene_text_;
+  std::uint64_t run_id_ = new_run_id();  // in every frame, the checkpoint and summary.json
   double checkpoint_interval_ = 0, next_checkpoint_ = 0;
   std::chrono::steady_clock::time_point wall_start_;
   double wall_before_ = 0;  // the wall time of the segments before a resume (the checkpoint's)

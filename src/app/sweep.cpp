@@ -176,8 +176,8 @@ int run_sweep(const SweepOptions& o) {
     if (next >= runs.size()) return false;
     auto& r = runs[next++];
     fs::create_directories(r.dir);
-    std::vector<std::string> args{
-        "run", o.scene, "--out", r.dir.string(), "--quiet", "--threads", std::to_string(o.threads)};
+    std::vector<std::string> args{"run",     o.scene,       "--out",     r.dir.string(),
+                                  "--quiet", "--overwrite", "--threads", std::to_string(o.threads)};
     for (auto& s : o.sets) args.insert(args.end(), {"--set", s});
     for (auto& p : o.plugins) args.insert(args.end(), {"--plugin", p});
     for (std::size_t k = 0; k < keys.size(); ++k)

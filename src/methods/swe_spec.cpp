@@ -68,6 +68,7 @@ MethodSpec swe_spec() {
   spec.hooks.read_sections = read_swe_sections;
   spec.hooks.resolve = resolve;
   spec.hooks.walls_hold_particles = false;
+  spec.hooks.health_fluid_checks = false;  // a depth per particle, no pressure; not the 3D energy
   return spec;
 }
 

@@ -18,5 +18,9 @@ void apply_override(toml::table& root, const std::string& text, Validator& val);
 void load_bodies(toml::table& root, Validator& val, Scene& sc, int default_layers, int covering);
 // [[probe]] and [[metric]] (reference tables read and checked).
 void load_measurements(toml::table& root, Validator& val, Scene& sc);
+// load_health.cpp: [health], and the refusal (at particles.smoothing_ratio) of a kernel whose
+// support is too small for the lattice: its gradient of a linear field more than 10% off.
+void load_health(const toml::table& root, Scene& sc);
+void check_kernel_support(const toml::table& root, Validator& val, const Scene& sc);
 
 }  // namespace ryushi

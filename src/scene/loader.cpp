@@ -45,16 +45,23 @@ double Scene::resolved_sound_speed() const {
   return c > 0 ? c : sound_speed_factor;  // no gravity: c0 = factor (m/s), documented in scenes.md
 }
 
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  {
-    std::ifstream probe(path);
-    if (!probe)
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides,
+                 const std::string* text) {
+  std::string source;
+  if (text) {
+    source = *text;
+  } else {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
       throw SceneError(path + ": cannot read the scene file (" +
                        (std::filesystem::exists(path) ? "permission denied" : "no such file") + ")");
+    std::ostringstream all;
+    all << in.rdbuf();
+    source = all.str();
   }
   toml::table root;
   try {
-    root = toml::parse_file(path);
+    root = toml::parse(source, path);
   } catch (const toml::parse_error& e) {
     std::ostringstream out;
     out << path << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
@@ -141,6 +148,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 
   Scene sc;
   sc.path = path;
+  sc.text = source;
   const int D = val.dimension;
   sc.dimension = D;
   auto get = [&](const char* sec, const char* key) -> toml::node& { return *root[sec][key].node(); };
@@ -250,6 +258,8 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
                      "); use [solver] preconditioner = \"jacobi\" with a periodic domain");
   if (sc.fixed_dt > sc.end_time)
     val.fail(root["time"]["dt"].node(), "time.dt", "time.dt is larger than time.end");
+  check_kernel_support(root, val, sc);
+  load_health(root, sc);
   load_heat_and_rheology(root, val, sc);
   load_elastic(root, val, sc);
   if (hooks.validate) hooks.validate(sc, root, val);

@@ -65,6 +65,12 @@ struct MethodHooks {
   // [[wall]] boxes are layers of wall particles around min..max (false: the shallow water's
   // mirror lines, which hold none, so a fluid block cannot reach into them).
   bool walls_hold_particles = true;
+  // [health] density_deviation when left out: the largest |rho / rho0 - 1| the method's
+  // assumptions allow (none: the method's density is not a state that can drift, not checked).
+  std::function<double(const Scene&)> health_density_deviation;
+  // Whether [health]'s energy, pressure and wall checks apply (the shallow water's particles carry
+  // a depth, not a pressure, and its energy is not the 3D fluid's).
+  bool health_fluid_checks = true;
   // After the scene's plain sections are read and before its geometry: defaults that depend on
   // the scene (which may set keys of the method's table) and the checks of the method's keys
   // against the rest of the scene. The root is the parsed file with --set applied, for the

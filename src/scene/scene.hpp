@@ -145,8 +145,19 @@ struct ImportSpec {
   std::shared_ptr<const ImportedParticles> particles;
 };
 
+// [health]: the run's physical checks after every step (app/health_monitor.hpp).
+struct HealthSpec {
+  bool warn = false;             // action = "warn": warn once per check and go on (default: stop, exit 3)
+  double density_deviation = 0;  // |rho / rho0 - 1| that 2% of the fluid may exceed (0: not checked)
+  double sound_speed = 0;        // c0: the density check waits a pressure wave's crossing of the fluid
+  double energy_rise = 0.05;     // of the energy scale, above E(0) (0: not checked)
+  double pressure_factor = 0;    // times the hydrostatic and dynamic pressure scale (0: not checked)
+  bool wall_penetration = true;  // fluid particles deep inside static wall layers
+};
+
 struct Scene {
   std::string path, name, description;
+  std::string text;  // the scene file's text as it was read (checkpoints keep it)
   int dimension = 2;
   std::vector<double> domain_min, domain_max;
   std::vector<bool> periodic;
@@ -188,6 +199,7 @@ struct Scene {
   std::vector<ProbeSpec> probes;
   std::vector<MetricSpec> metrics;
   std::vector<SystemSpec> systems;
+  HealthSpec health;
 
   double smoothing_length() const { return smoothing_ratio * spacing; }
   // Whether particles carry a temperature: conduction, or a viscosity that depends on it.
@@ -200,6 +212,9 @@ struct Scene {
 };
 
 // Loads, applies `key=value` overrides (section.key or section.N.key) and validates.
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+// With `text`, that is the scene's text in place of the file's (a checkpoint's copy); `path` still
+// names it in messages and places the files it refers to.
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {},
+                 const std::string* text = nullptr);
 
 }  // namespace ryushi

@@ -136,6 +136,50 @@ std::vector<SectionSpec> build() {
                 ranged({"bottom_smoothing", K::Integer, "sweeps", "2", "Jacobi sweeps on the coarsest level."}, 1, 64),
                 ranged({"bottom_size", K::Integer, "rows", "64", "A level with at most this many rows is the coarsest. The BMG paper's 1024 suits a million unknowns; at the few thousand of a small scene it leaves a barely coarsened bottom that two Jacobi sweeps do not solve (2D dam break, 3,200 particles: 49 CG iterations per solve at 1024, 23 at 256, 17 at 64)."}, 1, std::nullopt),
                 ranged({"jacobi_weight", K::Float, "", "(1; isph 2/3)", "Weight w of the multigrid's Jacobi sweeps z += w D^-1 (r - A z). mps: 1. Its matrix and every coarse matrix of it are weakly diagonally dominant with positive diagonals and negative off-diagonals, so the eigenvalues of D^-1 A lie in [0, 2] (Gershgorin) and a sweep with w = 1 amplifies no error mode; 2/3, the textbook value for the 5-point Laplacian, damps the upper half of the spectrum more slowly (3D dam break at 1M particles, max eig(D^-1 A) about 1.3: 15 CG iterations per solve at 2/3, 12 at 1; docs/solvers.md). isph: 2/3 (its corrected Laplacian is not always diagonally dominant). Above 2 / max eig(D^-1 A) the sweep amplifies errors and the solve fails."}, 1e-3, 1.5)}});
+  s.push_back(
+      {"health",
+       false,
+       false,
+       "Physical checks after every step (src/app/health_monitor.hpp, docs/health.md): a run that "
+       "breaks one stops with exit code 3, naming the step, the check, the particle and the likely "
+       "cause, instead of completing with nonsense. Each bound can be set here; 0 turns a check off.",
+       {choice("action", "\"stop\"",
+               "stop: a broken check is a numerical failure (exit code 3). warn: one warning per check, "
+               "recorded in summary.json (health.warnings), and the run goes on.",
+               {"stop", "warn"}),
+        ranged({"density_deviation", K::Float, "", "(wcsph: 2 (U / c0)^2 = 0.02; others 0: not checked)",
+                "More than 2% of the fluid particles (and more than 10) farther than this from rho0 (|rho / "
+                "rho0 - 1|) is a failure. WCSPH's default is twice what the flow's own pressure rho0 (g H + "
+                "U^2 / 2) = rho0 U^2 (U = sqrt(2 g H)) does to a weakly compressible fluid, 2 (U / c0)^2 "
+                "(without gravity and with a given sound_speed, U / c0 = 0.1). The bulk of the fluid, not "
+                "its extremes: an impact's water hammer compresses the few particles at the wall by up to U "
+                "/ c0 (the dam break's far corner 7-8%, a drifting block on an elastic plate 1.5% of its "
+                "water beyond 2%), which is the flow. The dam break at a / d = 40 keeps all but 0.19% of its "
+                "fluid within 2%; inviscid without delta-SPH it passed the bound at t = 0.33 s, at time.cfl "
+                "= 0.5 and a / d = 20 at t = 0.09 s (docs/health.md)."},
+               0.0, 1.0),
+        non_negative("energy_rise", "", "0.05",
+                     "Where nothing adds energy (no moving or prescribed-velocity solid, no elastic body, no "
+                     "fixed-pressure box, no [[systems]], no periodic axis along gravity): the fluid's "
+                     "kinetic plus potential energy may rise above its start by at most this fraction of the "
+                     "energy scale, the start's kinetic energy plus the potential energy above its lowest "
+                     "fluid particle. Viscosity and collisions only take energy away; the weakly "
+                     "compressible fluid's elastic energy returns a little at impacts."),
+        non_negative(
+            "pressure_factor", "", "(0: not checked)",
+            "A fluid particle's |p| at most this many times the scene's pressure scale, the largest of rho0 "
+            "(|g| H + U^2 / 2) (H the fluid's height at the start, U the largest of its starting speed, the "
+            "solids' speeds and sqrt(2 |g| H)), mu U / d and the largest starting |p| (fixed-pressure boxes "
+            "included). Off by default: single particles of sound runs read spikes far beyond any such scale "
+            "(a WCSPH drifting block on an elastic plate: 53 times, one particle 24.5% compressed, t = 0.375 "
+            "s; ISPH's 3D dam break: 75 MPa, 8,000 times, at t = 0.384 s), and WCSPH's pressure follows its "
+            "density, which density_deviation checks. 50 caught the inviscid dam break at t = 0.380 s."),
+        {"wall_penetration", K::Bool, "", "true",
+         "A fluid particle surrounded by the wall particles of a [[wall]] or static [[solid]] (its cell of "
+         "one spacing and the cells beside it all hold wall particles: a spacing or more inside a wall of "
+         "two or more layers) is a failure: the walls stopped holding the fluid (a step too long for the "
+         "wall force, missing density diffusion). Walls of one layer (isph) cannot show it; the wall guard "
+         "keeps those."}}});
   s.push_back({"output", false, false, "What is written to the output directory.",
                {non_negative("interval", "s", "(end / 20)", "Simulated time between frames (frame 0 is the initial state). The step that crosses a frame time is shortened to land on it, so frame k is at exactly k * interval."),
                 {"fields", K::StringList, "", "[]",

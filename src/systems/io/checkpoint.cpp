@@ -92,6 +92,7 @@ void write_checkpoint(const std::filesystem::path& path, const World<D>& world, 
     write_string(file, "overrides", overrides);
     const long long dim = D;
     write_raw(file, "dimension", H5T_NATIVE_LLONG, &dim, {1});
+    write_raw(file, "run_id", H5T_NATIVE_UINT64, &c.scene.run_id, {1});
     CheckpointClock clock = c.clock;
     double step = double(clock.step), removed = double(clock.removed);
     std::vector<double> values;
@@ -190,6 +191,8 @@ Checkpoint read_checkpoint_header(const std::filesystem::path& path) {
     c.scene.text = read_string(file.id, "scene_text");
     c.scene.overrides = split(read_string(file.id, "overrides"), '\n');
     c.scene.dimension = int(read_raw<long long>(file.id, "dimension", H5T_NATIVE_LLONG).at(0));
+    if (H5Lexists(file.id, "run_id", H5P_DEFAULT) > 0)
+      c.scene.run_id = read_raw<std::uint64_t>(file.id, "run_id", H5T_NATIVE_UINT64).at(0);
     auto values = read_raw<double>(file.id, "clock", H5T_NATIVE_DOUBLE);
     auto names = split(read_string(file.id, "clock_names"), '\n');
     double step = 0, removed = 0;

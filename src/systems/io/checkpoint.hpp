@@ -9,6 +9,7 @@
 // the ryushi version. Resources that systems rebuild every step (neighbour lists, cell grids,
 // matrices, multigrid hierarchies) are not stored; a Verlet list is rebuilt on the first step
 // after a resume and gives the same pairs in the same order, so the continued run is the run.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -34,6 +35,7 @@ struct CheckpointScene {
   std::string path, text, version;
   std::vector<std::string> overrides;
   int dimension = 2;
+  std::uint64_t run_id = 0;  // the run's, also in each of its frames (0: a checkpoint from before)
 };
 
 struct Checkpoint {

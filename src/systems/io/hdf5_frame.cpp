@@ -56,7 +56,8 @@ std::vector<double> padded_tensors(const std::vector<Mat<D>>& m) {
 
 template <int D>
 std::vector<FieldInfo> write_frame(const std::filesystem::path& path, const World<D>& world,
-                                   const std::vector<std::string>& extra, double time, long long step) {
+                                   const std::vector<std::string>& extra, double time, long long step,
+                                   std::uint64_t run_id) {
   std::vector<FieldInfo> written;
   {
     Hdf5Image image(path);
@@ -101,14 +102,34 @@ std::vector<FieldInfo> write_frame(const std::filesystem::path& path, const Worl
     write_dataset(file, "connectivity", H5T_NATIVE_INT32, vertices.data(), {n});
     write_attribute(file, "time", H5T_NATIVE_DOUBLE, time);
     write_attribute(file, "step", H5T_NATIVE_LLONG, step);
+    if (run_id) write_attribute(file, "run_id", H5T_NATIVE_UINT64, run_id);
     image.save();
   }
   return written;
 }
 
 template std::vector<FieldInfo> write_frame<2>(const std::filesystem::path&, const World<2>&,
-                                               const std::vector<std::string>&, double, long long);
+                                               const std::vector<std::string>&, double, long long,
+                                               std::uint64_t);
 template std::vector<FieldInfo> write_frame<3>(const std::filesystem::path&, const World<3>&,
-                                               const std::vector<std::string>&, double, long long);
+                                               const std::vector<std::string>&, double, long long,
+                                               std::uint64_t);
+
+std::uint64_t frame_run_id(const std::filesystem::path& path) {
+  std::uint64_t id = 0;
+  hid_t file = -1;
+  H5E_BEGIN_TRY {  // a file that is not HDF5 is an answer here, not an error stack on stderr
+    file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (file >= 0 && H5Aexists(file, "run_id") > 0) {
+      const hid_t attr = H5Aopen(file, "run_id", H5P_DEFAULT);
+      if (attr < 0 || H5Aread(attr, H5T_NATIVE_UINT64, &id) < 0) id = 0;
+      if (attr >= 0) H5Aclose(attr);
+    }
+    if (file >= 0) H5Fclose(file);
+  }
+  H5E_END_TRY;
+  if (file < 0) throw std::runtime_error(path.string() + ": cannot open the frame");
+  return id;
+}
 
 }  // namespace ryushi
