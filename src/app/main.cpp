@@ -29,16 +29,22 @@ int main(int argc, char** argv) {
   CLI::App app{"ryushi: particle methods for fluid mechanics (WCSPH, ISPH, MPS, shallow-water MPS)"};
   app.set_version_flag("--version", "ryushi " RYUSHI_VERSION);
   app.require_subcommand(1);
+  // A count of threads or jobs: CLI::PositiveNumber's message printed the double range's
+  // 310-digit upper end for --threads 0 (issue 51).
+  const CLI::Range kCount(1, 4096, "a count from 1 to 4096");
 
   RunOptions run;
   auto* run_cmd = app.add_subcommand("run", "Run a scene file headless.");
   run_cmd->add_option("scene", run.scene, "Scene file (TOML)")->required();
   run_cmd->add_option("--out", run.out_dir, "Output directory (default out/<scene name>)");
-  run_cmd->add_option("--threads", run.threads, "Worker threads (default: all cores)")->check(CLI::PositiveNumber);
+  run_cmd->add_option("--threads", run.threads, "Worker threads (default: all cores)")->check(kCount);
   run_cmd->add_option("--end-time", run.end_time, "Override time.end (s)");
   run_cmd->add_option("--set", run.sets, "Override a scene key: section.key=value (repeatable)");
   run_cmd->add_flag("--trace", run.trace, "Write trace.json (Chrome trace events, opens in Perfetto)");
   run_cmd->add_flag("--quiet", run.quiet, "No progress output and no profile table");
+  run_cmd->add_flag(
+      "--overwrite", run.overwrite,
+      "Replace another run's files in the output directory (without it such a directory is refused)");
   run_cmd->add_option("--plugin", run.plugins, "Load a plugin library first (repeatable; docs/extending.md)");
   run_cmd->add_option("--dump-matrix", run.dump_matrix_dir,
                       "Write the pressure system of one step to DIR: A.mtx, b.txt, x.txt (coordinates), p.txt (solution)");
@@ -53,7 +59,11 @@ int main(int argc, char** argv) {
   auto* resume_cmd = app.add_subcommand("resume", "Continue a run from OUT/checkpoint.h5 (same scene, same result).");
   resume_cmd->add_option("out", resume.out_dir, "The run's output directory")->required();
   resume_cmd->add_option("--end-time", resume.end_time, "Run on to this time instead (s)");
-  resume_cmd->add_option("--threads", resume.threads, "Worker threads (default: all cores)")->check(CLI::PositiveNumber);
+  resume_cmd->add_option(
+      "--set", resume.sets,
+      "Change a key that is safe mid-run: time.end, time.cfl, time.dt, time.dt_min, time.max_steps, "
+      "output.interval, output.probe_interval, output.checkpoint_interval (repeatable)");
+  resume_cmd->add_option("--threads", resume.threads, "Worker threads (default: all cores)")->check(kCount);
   resume_cmd->add_flag("--quiet", resume.quiet, "No progress output and no profile table");
   resume_cmd->add_option("--plugin", resume.plugins, "The plugin libraries the run was started with (repeatable)");
   resume_cmd->add_option("--checkpoint-interval", resume.checkpoint_interval,
@@ -67,8 +77,8 @@ int main(int argc, char** argv) {
   sweep_cmd->add_option("--vary", sweep.vary, "section.key=v1,v2,... (repeatable; the product of all)")->required();
   sweep_cmd->add_option("--out", sweep.out_dir, "Output directory (resumable: completed runs are kept)")->required();
   sweep_cmd->add_option("--set", sweep.sets, "A fixed override for every run (repeatable)");
-  sweep_cmd->add_option("--jobs", sweep.jobs, "Runs at a time (default 1)")->check(CLI::PositiveNumber);
-  sweep_cmd->add_option("--threads", sweep.threads, "Threads per run (default 1)")->check(CLI::PositiveNumber);
+  sweep_cmd->add_option("--jobs", sweep.jobs, "Runs at a time (default 1)")->check(kCount);
+  sweep_cmd->add_option("--threads", sweep.threads, "Threads per run (default 1)")->check(kCount);
   sweep_cmd->add_option("--error", sweep.error, "summary.json diagnostics key sweep.png plots (default: the first *_error)");
   sweep_cmd->add_flag("--quiet", sweep.quiet, "No log lines");
   sweep_cmd->add_option("--plugin", sweep.plugins, "Load a plugin library in every run (repeatable)");
@@ -152,6 +162,21 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--range", render.range, "Colour range LO,HI (default: 1st-99th percentile)");
   render_cmd->add_option("--dest", render.dest, "Where the pictures go (default OUT/render)");
 
+  // A first word that is no command (`ryushi frobnicate`): CLI11 only says a subcommand is required.
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string word = argv[1];
+    std::string known;
+    bool found = false;
+    for (auto* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+      known += (known.empty() ? "" : ", ") + sub->get_name();
+      found |= sub->get_name() == word;
+    }
+    if (!found) {
+      std::fprintf(stderr, "ryushi: command line: no command '%s'; the commands are %s (see ryushi --help)\n",
+                   word.c_str(), known.c_str());
+      return kExitBadInput;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

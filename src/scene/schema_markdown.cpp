@@ -1,5 +1,6 @@
 // docs/scenes.md: every section and key of the schema, each method's own [method] keys and each
 // registered system's keys, as Markdown (`ryushi keys --markdown`).
+#include <cstdio>
 #include <sstream>
 
 #include "scene/registered_keys.hpp"
@@ -8,12 +9,22 @@
 namespace ryushi {
 
 namespace {
+// A bound as written, not in fixed notation: 1e-06 rather than 0.0000 (cfl's lower bound read
+// 0.0000 in docs/scenes.md, issue 51).
+std::string shortest(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+}  // namespace
+
+namespace {
 void key_table(std::ostringstream& out, const std::vector<KeySpec>& keys) {
   out << "| key | type | unit | default | meaning |\n|---|---|---|---|---|\n";
   for (auto& k : keys) {
     std::string range;
-    if (k.min) range += std::string(k.min_exclusive ? " > " : " >= ") + std::to_string(*k.min).substr(0, 6);
-    if (k.max) range += " <= " + std::to_string(*k.max).substr(0, 6);
+    if (k.min) range += std::string(k.min_exclusive ? " > " : " >= ") + shortest(*k.min);
+    if (k.max) range += " <= " + shortest(*k.max);
     if (!k.choices.empty()) {
       range = " one of:";
       for (auto& c : k.choices) range += " `" + c + "`";

@@ -1,0 +1,33 @@
+// Papercuts found by trying ryushi as a new user would (issue 51, point 6), each pinned.
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "app/exit_codes.hpp"
+#include "test_util.hpp"
+
+using namespace ryushi;
+
+TEST_CASE("cli: a thread count of 0 and an unknown command are one-line errors that say what is wrong") {
+  const std::string bin = RYUSHI_BINARY;
+  auto zero = test::run_command(bin + " run " + test::scene_path("dam_break_2d.toml") + " --threads 0");
+  CHECK(zero.code == kExitBadInput);
+  // It printed the double range's 310-digit upper end.
+  CHECK_MESSAGE(zero.output.find("not in range 1 to 4096") != std::string::npos, zero.output);
+  CHECK(zero.output.size() < 200);
+  auto unknown = test::run_command(bin + " frobnicate");
+  CHECK(unknown.code == kExitBadInput);
+  // It said only that a subcommand is required.
+  CHECK_MESSAGE(unknown.output.find("no command 'frobnicate'; the commands are run, resume") != std::string::npos,
+                unknown.output);
+}
+
+TEST_CASE("cli: the scene reference writes small bounds as numbers, not 0.0000") {
+  auto keys = test::run_command(std::string(RYUSHI_BINARY) + " keys --markdown");
+  REQUIRE(keys.code == kExitDone);
+  const auto cfl = keys.output.find("| `cfl` |");
+  REQUIRE(cfl != std::string::npos);
+  const auto row = keys.output.substr(cfl, keys.output.find('\n', cfl) - cfl);
+  CHECK_MESSAGE(row.find("Allowed: >= 1e-06 <= 1.") != std::string::npos, row);
+  CHECK(keys.output.find("0.0000") == std::string::npos);
+}
