@@ -31,3 +31,15 @@ TEST_CASE("cli: the scene reference writes small bounds as numbers, not 0.0000")
   CHECK_MESSAGE(row.find("Allowed: >= 1e-06 <= 1.") != std::string::npos, row);
   CHECK(keys.output.find("0.0000") == std::string::npos);
 }
+
+TEST_CASE("cli: `ryushi keys` lists every key on a line for a terminal; --markdown is the reference") {
+  auto plain = test::run_command(std::string(RYUSHI_BINARY) + " keys");
+  REQUIRE(plain.code == kExitDone);
+  // It printed the Markdown tables of docs/scenes.md.
+  CHECK(plain.output.find("| key | type |") == std::string::npos);
+  CHECK(plain.output.find("\n  time.cfl  number  default (0.2") != std::string::npos);
+  CHECK(plain.output.find("\n  method.delta  number") != std::string::npos);  // a method's own key
+  CHECK(plain.output.find("\n  health.energy_rise  number  default 0.05\n") != std::string::npos);
+  auto markdown = test::run_command(std::string(RYUSHI_BINARY) + " keys --markdown");
+  CHECK(markdown.output.find("| key | type |") != std::string::npos);
+}

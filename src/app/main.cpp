@@ -231,7 +231,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "ryushi: %s\n", e.what());
       return kExitBadInput;
     }
-    std::printf("%s", schema_markdown().c_str());
+    std::printf("%s", markdown ? schema_markdown().c_str() : schema_text().c_str());
     return kExitDone;
   }
   return kExitBadInput;

@@ -69,5 +69,7 @@ std::string type_name(KeyType t);
 std::string closest_name(const std::string& word, const std::vector<std::string>& candidates);
 // Markdown reference of every section and key (docs/scenes.md), including registered systems.
 std::string schema_markdown();
+// The same keys one per line with the first sentence of each, for a terminal (`ryushi keys`).
+std::string schema_text();
 
 }  // namespace ryushi
