@@ -1,10 +1,9 @@
 #pragma once
-// Small file helpers of the driver: a whole file as text (the scene a checkpoint keeps) and
-// probes.csv from the probe rows.
+// Small file helpers of the driver: the files a run writes (for the one-run-per-folder rule and
+// --overwrite), the run id, and probes.csv from the probe rows.
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <random>
 #include <sstream>
 #include <string>
@@ -13,13 +12,6 @@
 #include "scene/scene.hpp"
 
 namespace ryushi {
-
-inline std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // What a run writes into its output directory (frames/*.h5 besides), and what --overwrite
 // removes: nothing else in the directory is touched.
