@@ -166,3 +166,42 @@ TEST_CASE("import: a round tank restarts from its own frame, and a particle in a
                                    "\"post\"\nshape = \"box\"\nmin = [0.65, 0.15]\nmax = [0.75, 0.25]\n")) ==
       "bad.toml:35:8: [[import]] #0: a particle at (0.7, 0.21) lies in [[solid]] 'post'");
 }
+
+// Imported particles go through the checks [[fluid]] blocks do (issue 51, point 4): before,
+// particles in a wall's layers, on a wall particle, below the floor, inside a fluid block or two
+// at one point were all accepted. The tank's wall is min = (0, 0), max = (0.5, 0.7), d = 0.025.
+TEST_CASE("import: particles in wall layers, in a fluid block or on each other are bad input") {
+  auto dir = test::unique_scratch("import_overlaps");
+  std::filesystem::create_directories(dir);
+  const auto error = [&](const std::string& name, const std::string& csv, const std::string& more = "") {
+    test::write_text(dir / name, csv);
+    return test::scene_error(tank("[[import]]\nfile = \"" + (dir / name).string() + "\"\n" + more, 0.1));
+  };
+  const std::string layers =
+      " particle layers of [[wall]] #0 (more than a quarter spacing beyond its min..max)";
+  // Below the floor, two spacings deep.
+  CHECK(error("floor.csv", "x, y\n0.25, 0.3\n0.25, -0.05\n")
+            .find("bad.toml:21:8: [[import]] #0: a particle at (0.25, -0.05) lies in the ") == 0);
+  CHECK(error("floor.csv", "x, y\n0.25, 0.3\n0.25, -0.05\n").find(layers) != std::string::npos);
+  // On the first layer's particle of the left wall.
+  CHECK(error("on_wall.csv", "x, y\n-0.0125, 0.3\n").find("a particle at (-0.0125, 0.3) lies in the ") !=
+        std::string::npos);
+  // Inside a fluid block (the block ends at y = 0.2).
+  CHECK(error("in_block.csv", "x, y\n0.2, 0.4\n0.2, 0.1\n",
+              "[[fluid]]\nmin = [0.0, 0.0]\nmax = [0.5, 0.2]\n") ==
+        "bad.toml:21:8: [[import]] #0: a particle at (0.2, 0.1) lies in [[fluid]] #0 (their particles would "
+        "sit "
+        "on each other)");
+  // A repeated row.
+  CHECK(error("twice.csv", "x, y\n0.1, 0.3\n0.2, 0.3\n0.1, 0.3\n") ==
+        "bad.toml:21:8: [[import]] #0: a particle at (0.1, 0.3) lies on one of [[import]] #0 at (0.1, 0.3) "
+        "(closer than 0.01 spacing)");
+  // Settled fluid may touch the wall's surface (a fifth of a spacing beyond it is not in the layers),
+  // and sit on a block's top.
+  test::write_text(dir / "fine.csv", "x, y\n0.25, -0.005\n0.2, 0.2125\n");
+  test::write_text(
+      dir / "fine.toml",
+      tank("[[import]]\nfile = \"fine.csv\"\n[[fluid]]\nmin = [0.0, 0.0]\nmax = [0.5, 0.2]\n", 0.1));
+  auto fine = test::run_command(bin() + " check " + (dir / "fine.toml").string());
+  CHECK_MESSAGE(fine.code == 0, fine.output);
+}

@@ -134,6 +134,22 @@ TEST_CASE("mesh: a missing or malformed STL file is bad input naming the file") 
         "bad.toml:14:8: [[mesh]] 'm': " + (dir / "bad.stl").string() +
             " is not a triangle mesh CGAL can read (STL, ASCII or binary; a surface without degenerate or "
             "non-manifold faces)");
+  // 300 random triangles crossing each other became a solid body without a word; a NaN vertex
+  // was reported as a particle outside the domain (issue 51, point 4).
+  make_stl("random 300 0.2 " + (dir / "random.stl").string());
+  make_stl("nan-cube 0.2 " + (dir / "nan.stl").string());
+  const std::string solid = "[[solid]]\nname = \"b\"\nshape = \"mesh\"\nmesh = \"m\"\n";
+  const auto random = test::scene_error(
+      scene_3d("[[mesh]]\nname = \"m\"\nfile = \"" + (dir / "random.stl").string() + "\"\n" + fluid + solid));
+  CHECK_MESSAGE(random.find("bad.toml:14:8: [[mesh]] 'm': " + (dir / "random.stl").string() +
+                            ": face 1 crosses face ") == 0,
+                random);
+  CHECK(random.find(" pairs of faces intersect; a surface to fill or stand on may not cross itself)") !=
+        std::string::npos);
+  CHECK(test::scene_error(scene_3d("[[mesh]]\nname = \"m\"\nfile = \"" + (dir / "nan.stl").string() + "\"\n" +
+                                   fluid + solid)) ==
+        "bad.toml:14:8: [[mesh]] 'm': " + (dir / "nan.stl").string() +
+            ": face 4 has a vertex that is not a finite number (nan, 0, 0)");
   CHECK(test::scene_error(scene_3d(fluid + "mesh = \"nothing\"\n")) ==
         "bad.toml:15:8: [[fluid]] #0: there is no [[mesh]] named 'nothing'");
   // Nothing written.
@@ -156,13 +172,16 @@ TEST_CASE("mesh: water at rest in a closed STL vessel stays at rest and weighs i
   test::write_text(
       dir / "run.toml",
       "[scene]\ndimension = 3\n[domain]\nmin = [-0.1, -0.1, -0.1]\nmax = [0.5, 0.5, 0.5]\n[particles]\n"
-      "spacing = 0.025\n[material]\ndensity = 1000.0\nviscosity = 1.0e-3\n[method]\nname = \"isph\"\n[time]\nend = 1.0\n"
+      "spacing = 0.025\n[material]\ndensity = 1000.0\nviscosity = 1.0e-3\n[method]\nname = "
+      "\"isph\"\n[time]\nend = 1.0\n"
       "[output]\ninterval = 1.0\nprobe_interval = 0.05\n[[mesh]]\nname = \"vessel\"\nfile = \"vessel.stl\"\n"
-      "translate = [0.2, 0.2, 0.2]\n[[fluid]]\nmin = [0.0, 0.0, 0.0]\nmax = [0.4, 0.4, 0.2]\n[[solid]]\nname = \"vessel\"\n"
-      "shape = \"mesh\"\nmesh = \"vessel\"\ncontainer = true\n[[probe]]\nname = \"ke\"\ntype = \"kinetic_energy\"\n"
+      "translate = [0.2, 0.2, 0.2]\n[[fluid]]\nmin = [0.0, 0.0, 0.0]\nmax = [0.4, 0.4, 0.2]\n[[solid]]\nname "
+      "= \"vessel\"\n"
+      "shape = \"mesh\"\nmesh = \"vessel\"\ncontainer = true\n[[probe]]\nname = \"ke\"\ntype = "
+      "\"kinetic_energy\"\n"
       "[[probe]]\nname = \"fz\"\ntype = \"force\"\nsolid = \"vessel\"\naxis = 2\n");
-  auto r = test::run_command(bin() + " run " + (dir / "run.toml").string() + " --out " + (dir / "out").string() +
-                             " --quiet");
+  auto r = test::run_command(bin() + " run " + (dir / "run.toml").string() + " --out " +
+                             (dir / "out").string() + " --quiet");
   REQUIRE_MESSAGE(r.code == 0, r.output);
   auto probes = test::read_csv(dir / "out" / "probes.csv");
   const double weight = test::json_number(test::read_text(dir / "out" / "summary.json"), "fluid_mass") * 9.81;
@@ -173,7 +192,8 @@ TEST_CASE("mesh: water at rest in a closed STL vessel stays at rest and weighs i
     if (probes["time"][k] >= 0.5) force += probes["fz"][k], ++samples;
   }
   REQUIRE(samples >= 5);
-  MESSAGE("kinetic energy at most ", largest, " J; force ", -force / samples, " N against the weight ", weight, " N");
+  MESSAGE("kinetic energy at most ", largest, " J; force ", -force / samples, " N against the weight ",
+          weight, " N");
   CHECK(largest < 1e-3);
   CHECK(std::abs(-force / samples / weight - 1) < 0.01);
 }

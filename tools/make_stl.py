@@ -7,8 +7,12 @@ reader turns a closed mesh outward).
   make_stl.py sphere RADIUS LEVELS FILE [--binary] [--inward]   icosahedron split LEVELS times
   make_stl.py open-box SIDE FILE [--binary]                  the cube without its top (+z) face
   make_stl.py garbage FILE                                   not an STL file at all
+  make_stl.py random COUNT SIDE FILE [--binary]              COUNT random triangles in a cube of
+                                                             SIDE (seeded: they intersect each other)
+  make_stl.py nan-cube SIDE FILE                             the cube (binary) with one vertex NaN
 """
 import math
+import random
 import struct
 import sys
 
@@ -86,6 +90,16 @@ def main(argv):
         faces, path = cube_faces(float(args[1])), args[2]
     elif kind == 'sphere':
         faces, path = sphere_faces(float(args[1]), int(args[2])), args[3]
+    elif kind == 'random':
+        rng = random.Random(1)
+        side = float(args[2])
+        faces = [tuple(tuple(rng.uniform(0, side) for _ in range(3)) for _ in range(3))
+                 for _ in range(int(args[1]))]
+        path = args[3]
+    elif kind == 'nan-cube':
+        faces, path = cube_faces(float(args[1])), args[2]
+        faces[3] = (faces[3][0], (float('nan'), 0.0, 0.0), faces[3][2])
+        flags.add('--binary')
     elif kind == 'open-box':
         faces, path = cube_faces(float(args[1]), top=False), args[2]
     else:

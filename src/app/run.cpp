@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "app/memory_estimate.hpp"
 #include "app/plugins.hpp"
 #include "app/runner.hpp"
 
@@ -55,6 +56,7 @@ int run_loaded(const RunOptions& opt, const fs::path& resume = {}, int checkpoin
         load_scene(opt.scene, with_end_time(opt), opt.scene_text.empty() ? nullptr : &opt.scene_text);
     if (checkpoint_dimension && scene.dimension != checkpoint_dimension)
       throw SceneError(resume.string() + ": the checkpoint is of another dimension");
+    guard_memory(scene, estimate_memory(scene));
     code = scene.dimension == 2 ? run_dim<2>(scene, opt, resume) : run_dim<3>(scene, opt, resume);
   } catch (const SceneError& e) {
     std::fprintf(stderr, "ryushi: %s\n", e.what());
@@ -136,6 +138,8 @@ int check_scene(const std::string& path, const std::vector<std::string>& sets,
   try {
     load_plugins(plugins, path);
     Scene scene = load_scene(path, sets);
+    const MemoryEstimate memory = estimate_memory(scene);
+    guard_memory(scene, memory);
     auto build = [&](auto dim) {
       constexpr int D = decltype(dim)::value;
       World<D> world;
@@ -143,8 +147,11 @@ int check_scene(const std::string& path, const std::vector<std::string>& sets,
       Profiler profiler;
       auto method = build_method<D>(scene, world);
       Scheduler<D> s(std::move(method.pipeline), world, res, profiler);
-      std::printf("%s: OK (%dD %s, %zu particles, %zu systems in the step graph)\n", path.c_str(), D,
-                  scene.method.c_str(), world.size(), s.pipeline().size());
+      std::printf(
+          "%s: OK (%dD %s, %zu particles, %zu systems in the step graph; memory about %s of %s "
+          "available)\n",
+          path.c_str(), D, scene.method.c_str(), world.size(), s.pipeline().size(),
+          format_bytes(memory.bytes).c_str(), format_bytes(available_memory().bytes).c_str());
       if (write_initial.empty()) return;
       // Every column the method made at set-up (wall normals, layers, areas, ...), not only
       // the run's output fields: this frame is for inspecting the geometry.

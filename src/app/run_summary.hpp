@@ -2,6 +2,9 @@
 // Runner<D>::write_summary: summary.json, written with every frame and at the end (status,
 // particles, steps, times, speed, bytes per particle, the solver's figures, diagnostics,
 // metrics); docs/output.md lists its keys.
+#include <sys/resource.h>
+
+#include "app/memory_estimate.hpp"
 #include "app/runner.hpp"
 
 namespace ryushi {
@@ -43,6 +46,14 @@ void Runner<D>::write_summary(const std::string& status, const std::string& mess
     w.key("pressure_preconditioner").value(st.max_preconditioner_bytes / n);
     w.key("pressure_krylov_vectors").value(st.max_krylov_bytes / n);
   }
+  w.end_object();
+  // The memory guard's estimate made before the run allocated (app/memory_estimate.hpp) beside
+  // the process's peak resident set so far: how far the estimate is off for this scene.
+  w.key("memory").begin_object();
+  w.key("estimated_bytes").value(estimate_memory(scene_).bytes);
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  w.key("peak_resident_bytes").value(1024.0 * usage.ru_maxrss);
   w.end_object();
   w.key("parameters").begin_object();
   w.key("spacing").value(scene_.spacing);

@@ -3,19 +3,25 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <numbers>
+#include <sstream>
+#include <vector>
 
 namespace ryushi {
 
@@ -33,6 +39,51 @@ Point to_point(const Vec<3>& x) {
 Vec<3> to_vec(const Point& p) {
   return {p.x(), p.y(), p.z()};
 }
+// A surface CGAL read may still be no surface to fill or stand on: a vertex that is not a finite
+// number (a binary STL's NaN or infinity, which became particles "outside the domain"), or faces
+// that cross each other (random triangles became a solid body without a word). Both name the
+// first bad face, counted from 1 as read (the file's order, less any degenerate face the reader
+// dropped). Self-intersection is decided with exact predicates (the mesh copied into CGAL's Epick kernel):
+// doubles may call faces that only touch crossing.
+void check_mesh(const std::string& path, const Mesh& mesh) {
+  std::size_t number = 0;
+  for (auto f : mesh.faces()) {
+    ++number;
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      const Point& p = mesh.point(v);
+      if (std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z())) continue;
+      std::ostringstream m;
+      m << path << ": face " << number << " has a vertex that is not a finite number (" << p.x() << ", "
+        << p.y() << ", " << p.z() << ")";
+      throw MeshError(m.str());
+    }
+  }
+  using Exact = CGAL::Exact_predicates_inexact_constructions_kernel;
+  CGAL::Surface_mesh<Exact::Point_3> exact;
+  std::vector<decltype(exact.add_vertex())> vertex(mesh.number_of_vertices());
+  for (auto v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    vertex[v.idx()] = exact.add_vertex(Exact::Point_3(p.x(), p.y(), p.z()));
+  }
+  for (auto f : mesh.faces()) {
+    std::vector<decltype(exact.add_vertex())> corners;
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) corners.push_back(vertex[v.idx()]);
+    exact.add_face(corners);
+  }
+  using ExactFace = CGAL::Surface_mesh<Exact::Point_3>::Face_index;
+  std::vector<std::pair<ExactFace, ExactFace>> crossing;
+  PMP::self_intersections(exact, std::back_inserter(crossing));
+  if (crossing.empty()) return;
+  auto [a, b] = *std::min_element(crossing.begin(), crossing.end(), [](auto& x, auto& y) {
+    return std::min(x.first.idx(), x.second.idx()) < std::min(y.first.idx(), y.second.idx());
+  });
+  std::ostringstream m;
+  m << path << ": face " << std::min(a.idx(), b.idx()) + 1 << " crosses face "
+    << std::max(a.idx(), b.idx()) + 1 << " (" << crossing.size()
+    << " pairs of faces intersect; a surface to fill or stand on may not cross itself)";
+  throw MeshError(m.str());
+}
+
 }  // namespace
 
 struct TriangleMesh::Impl {
@@ -62,6 +113,7 @@ std::shared_ptr<const TriangleMesh> TriangleMesh::read(const std::string& path, 
     throw MeshError(path +
                     " is not a triangle mesh CGAL can read (STL, ASCII or binary; a surface without "
                     "degenerate or non-manifold faces)");
+  check_mesh(path, mesh);
   // Scale, rotate about x, y, z, translate.
   const double deg = std::numbers::pi / 180;
   const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(t.rotate_degrees[2] * deg, Eigen::Vector3d::UnitZ()) *

@@ -66,6 +66,9 @@ MethodSpec swe_spec() {
   spec.hooks.smoothing_ratio = [](const Scene& sc) { return sc.swe.influence_ratio; };
   spec.hooks.cfl = 0.5;
   spec.hooks.read_sections = read_swe_sections;
+  // Fewer columns than WCSPH's 2D pipeline, whose figure it takes (splitting adds particles
+  // later: the estimate is of the start).
+  spec.hooks.bytes_per_particle = [](int) { return 800.0; };
   spec.hooks.resolve = resolve;
   spec.hooks.walls_hold_particles = false;
   spec.hooks.health_fluid_checks = false;  // a depth per particle, no pressure; not the 3D energy

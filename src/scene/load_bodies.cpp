@@ -330,36 +330,7 @@ void load_bodies(toml::table& root, Validator& val, Scene& sc, int default_layer
       sc.solids.push_back(std::move(b));
     }
   }
-  // Imported particles are placed as given, not cut around bodies: one inside a body (outside a
-  // container) is an error. Not one merely near it: a body's first wall layer lies half a spacing
-  // inside its surface (a container's outside it), and a settled run's fluid comes as close as
-  // that to the surface, closer than the generator's margin (a round tank's own frame was refused
-  // when the test was half a spacing).
-  for (std::size_t i = 0; i < sc.imports.size() && !sc.solids.empty(); ++i) {
-    auto overlap = [&](auto dim) {
-      constexpr int DD = decltype(dim)::value;
-      for (std::size_t k = 0; k < sc.solids.size(); ++k) {
-        SolidShape<DD> shape(sc.solids[k],
-                             sc.solids[k].mesh >= 0 ? sc.meshes[sc.solids[k].mesh].mesh : nullptr);
-        for (auto& p : sc.imports[i].particles->position) {
-          Vec<DD> x;
-          for (int a = 0; a < DD; ++a) x[a] = p[a];
-          if (shape.within(x, 0.0)) {
-            std::ostringstream m;
-            m << "[[import]] #" << i << ": a particle at (" << p[0] << ", " << p[1]
-              << (DD == 3 ? ", " + std::to_string(p[2]) : "") << ") lies "
-              << (sc.solids[k].container ? "outside container '" : "in [[solid]] '") << sc.solids[k].name
-              << "'";
-            val.fail(at.where("import", i, "file"), path_of("import", i, "file"), m.str());
-          }
-        }
-      }
-    };
-    if (D == 2)
-      overlap(std::integral_constant<int, 2>{});
-    else
-      overlap(std::integral_constant<int, 3>{});
-  }
+  check_imports(root, val, sc, walls_hold_particles);
   // Fluid on top of wall particles or of other fluid: r = 0 pairs, not a flow. Shallow-water walls
   // are mirrored ghosts, not particles, so only the fluid-fluid test applies there.
   const double overlap_tol = 1e-6 * sc.spacing;

@@ -16,6 +16,9 @@ void apply_override(toml::table& root, const std::string& text, Validator& val);
 // across them (overlaps, containers); walls and solids without `layers` take default_layers,
 // and must cover the support (covering layers) unless the method keeps fewer.
 void load_bodies(toml::table& root, Validator& val, Scene& sc, int default_layers, int covering);
+// import_checks.cpp: imported particles inside solids, wall layers or fluid blocks, or on top of
+// each other (after the blocks, walls and solids are read).
+void check_imports(toml::table& root, Validator& val, const Scene& sc, bool walls_hold_particles);
 // [[probe]] and [[metric]] (reference tables read and checked).
 void load_measurements(toml::table& root, Validator& val, Scene& sc);
 // load_health.cpp: [health], and the refusal (at particles.smoothing_ratio) of a kernel whose

@@ -37,6 +37,10 @@ std::shared_ptr<const ImportedParticles> from_frame(const std::string& path, int
     throw ImportError(path + ": not a ryushi frame (position, velocity, pressure and kind disagree in size)");
   for (std::size_t i = 0; i < n; ++i) {
     if (kind[i] != 0) continue;
+    for (int a = 0; a < 3; ++a)
+      if (!std::isfinite(x[3 * i + a]) || !std::isfinite(v[3 * i + a]) || !std::isfinite(p[i]))
+        throw ImportError(path + ": particle " + std::to_string(i) +
+                          "'s position, velocity or pressure is not a finite number");
     if (dimension == 2 && x[3 * i + 2] != 0)
       throw ImportError(path + ": a 3D frame (particle " + std::to_string(i) + " has z != 0) in a 2D scene");
     out->position.push_back({x[3 * i], x[3 * i + 1], x[3 * i + 2]});

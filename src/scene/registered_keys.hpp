@@ -71,6 +71,10 @@ struct MethodHooks {
   // Whether [health]'s energy, pressure and wall checks apply (the shallow water's particles carry
   // a depth, not a pressure, and its energy is not the 3D fluid's).
   bool health_fluid_checks = true;
+  // Peak resident bytes per particle of a run (columns, neighbour list, solver) at the default
+  // neighbour skin, by dimension, for the memory estimate made before anything is allocated
+  // (app/memory_estimate.hpp; unset: the estimate takes 3,000, more than any built-in method).
+  std::function<double(int dimension)> bytes_per_particle;
   // After the scene's plain sections are read and before its geometry: defaults that depend on
   // the scene (which may set keys of the method's table) and the checks of the method's keys
   // against the rest of the scene. The root is the parsed file with --set applied, for the
