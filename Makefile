@@ -11,7 +11,7 @@ PY_PACKAGES := python3-numpy python3-h5py python3-matplotlib python3-scipy
 PV_PACKAGES := paraview python3-paraview xvfb xauth ffmpeg
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps py-deps pv-deps build run test test-paraview test-sanitize bench plots tradeoffs docs fuzz clean
+.PHONY: all deps py-deps pv-deps render-deps build run test test-paraview test-sanitize bench plots tradeoffs docs fuzz clean
 
 all: build
 
@@ -33,6 +33,12 @@ pv-deps:
 	if [ -n "$$missing" ]; then \
 	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
+
+# `ryushi render --movie`: Python's packages and ffmpeg (not in `make run`: the PNGs need no
+# ffmpeg).
+render-deps: py-deps
+	@dpkg -s ffmpeg >/dev/null 2>&1 || { $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends ffmpeg; }
 
 build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release

@@ -43,3 +43,13 @@ TEST_CASE("cli: `ryushi keys` lists every key on a line for a terminal; --markdo
   auto markdown = test::run_command(std::string(RYUSHI_BINARY) + " keys --markdown");
   CHECK(markdown.output.find("| key | type |") != std::string::npos);
 }
+
+TEST_CASE("cli: a run stopped by time.max_steps says so, not \"completed\"") {
+  auto dir = test::unique_scratch("max_steps_status");
+  auto r = test::run_command(std::string(RYUSHI_BINARY) + " run " + test::scene_path("hydrostatic_2d.toml") +
+                             " --quiet --set time.max_steps=3 --out " + dir.string());
+  CHECK(r.code == kExitDone);
+  const auto summary = test::read_text(dir / "summary.json");
+  CHECK(test::json_raw(summary, "status") == "max_steps");
+  CHECK_MESSAGE(summary.find("stopped at time.max_steps = 3, t = ") != std::string::npos, summary);
+}

@@ -173,3 +173,16 @@ TEST_CASE("method keys: a key a method removed is bad input at the key, naming w
                    ":1: [method] violent_flow was removed from method "
                    "retiring_example: use pressure_gradient = \"corrected\"") == 0);
 }
+
+// A name the program registers twice (two translation units, an in-tree extension) threw from a
+// static initialiser, so every command aborted (exit 134); it is recorded instead, and main()
+// prints it on one line with exit 1 before any command (issue 51, point 6).
+TEST_CASE("method keys: a name registered twice is recorded, the first registration kept") {
+  const std::string doc = find_method_spec("wcsph")->doc;
+  MethodSpec spec;
+  spec.doc = "an impostor";
+  CHECK_FALSE(register_method_spec("wcsph", spec));
+  CHECK(find_method_spec("wcsph")->doc == doc);
+  const auto& clashes = built_in_registration_clashes();
+  CHECK(std::find(clashes.begin(), clashes.end(), "method 'wcsph'") != clashes.end());
+}

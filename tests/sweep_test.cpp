@@ -60,3 +60,20 @@ TEST_CASE("sweep: a bad --vary or key is exit code 2 before any run") {
   CHECK(no_value.code == kExitBadInput);
   CHECK_MESSAGE(no_value.output.find("an empty value") != std::string::npos, no_value.output);
 }
+
+// Ctrl-C (SIGINT) stops the sweep: no new run starts, the running one stops as `ryushi run`
+// does, sweep.csv is written for what there is, exit 130 (before, the sweep died without its
+// table). The signal goes to the sweep alone here, which passes it on to its run.
+TEST_CASE("sweep: SIGINT stops the sweep, writes its table and starts no new run") {
+  auto dir = test::unique_scratch("sweep_interrupt");
+  const std::string cmd = std::string(RYUSHI_BINARY) + " sweep " + test::scene_path("dam_break_2d.toml") +
+                          " --vary time.cfl=0.1,0.15,0.2 --quiet --out " + dir.string();
+  // Each run takes seconds (a/d = 40 to t = 1 s); the signal comes after one.
+  auto r = test::run_command("sh -c '" + cmd + " & pid=$!; sleep 1; kill -INT $pid; wait $pid; echo exit=$?'");
+  CHECK_MESSAGE(r.output.find("exit=130") != std::string::npos, r.output);
+  const auto csv = test::read_text(dir / "sweep.csv");
+  CHECK(csv.find("completed") == std::string::npos);
+  CHECK(csv.find("0.2,time.cfl=0.2,missing") != std::string::npos);
+  CHECK(!std::filesystem::exists(dir / "time.cfl=0.15"));
+  CHECK(!std::filesystem::exists(dir / "time.cfl=0.2"));
+}

@@ -66,13 +66,16 @@ def main():
     def spread(values):
         positive = [v for v in values if v > 0]
         return max(positive) / min(positive) if len(positive) == len(values) and positive else 1.0
-    if spread([float(r["wall_time_s"]) for r in done]) >= 10:
+    log_x = spread([float(r["wall_time_s"]) for r in done]) >= 10
+    log_y = spread([float(r[error]) for r in done]) >= 10
+    if log_x:
         ax.set_xscale("log")
-    if spread([float(r[error]) for r in done]) >= 10:
+    if log_y:
         ax.set_yscale("log")
     ax.grid(True, which="both", alpha=0.3)
-    ax.set_xlabel("wall time (s)")
-    ax.set_ylabel(error)
+    # Each label says its scale (the docs said "log axes" where they were linear).
+    ax.set_xlabel("wall time (s, log scale)" if log_x else "wall time (s)")
+    ax.set_ylabel(error + (" (log scale)" if log_y else ""))
     ax.set_title(f"{error} against wall time")
     ax.legend(fontsize=8)
     fig.tight_layout()

@@ -12,7 +12,8 @@ every particle projected (default), or with --slice y=0.1 only those within one 
 plane. The colour range is the 1st-99th percentile of the field over the drawn frames, the same
 for every frame, unless --range gives it.
 
-Exit codes: 0 done, 2 bad input (no frames, unknown field, bad option), 1 internal error.
+Exit codes: 0 done, 2 bad input (no frames, unknown field, bad option, --movie without ffmpeg),
+4 the pictures could not be written (a read-only or full DIR), 1 internal error.
 """
 import argparse
 import glob
@@ -40,6 +41,12 @@ UNITS = {"pressure": "Pa", "density": "kg/m^3", "velocity": "m/s", "acceleration
 def bad_input(message):
     print(f"ryushi render: {message}", file=sys.stderr)
     sys.exit(2)
+
+
+def cannot_write(path, error):
+    # A read-only or full folder ended in a Python traceback.
+    print(f"ryushi render: could not write {path}: {error.strerror or error}", file=sys.stderr)
+    sys.exit(4)
 
 
 def frame_files(out):
@@ -109,10 +116,22 @@ def main():
 
     if not os.path.isdir(a.out):
         bad_input(f"{a.out}: no such output directory")
+    # Before any picture: it rendered every PNG and then failed for want of ffmpeg.
+    ffmpeg = shutil.which("ffmpeg")
+    if a.movie and ffmpeg is None:
+        bad_input("--movie needs ffmpeg, which is not installed (Debian package ffmpeg: `make render-deps` "
+                  "installs it); without --movie the PNGs need only Python's packages")
     files = frame_files(a.out)
     chosen = files if a.movie else choose(files, a.frames)
     dest = a.dest or os.path.join(a.out, "render")
-    os.makedirs(dest, exist_ok=True)
+    try:
+        os.makedirs(dest, exist_ok=True)
+        probe = os.path.join(dest, ".ryushi-render-probe")
+        with open(probe, "w"):
+            pass
+        os.remove(probe)
+    except OSError as e:
+        cannot_write(dest, e)
     name, spacing = summary_of(a.out)
     plane_axis, slice_value = 1, None
     if a.slice:
@@ -178,17 +197,17 @@ def main():
         ax.set_ylabel("z (m)" if dim3 else "y (m)")
         stem = os.path.splitext(os.path.basename(path))[0].replace("frame", a.field)
         png = os.path.join(dest, stem + ".png")
-        fig.savefig(png + ".tmp.png")
+        try:
+            fig.savefig(png + ".tmp.png")
+            os.replace(png + ".tmp.png", png)
+        except OSError as e:
+            cannot_write(png, e)
         plt.close(fig)
-        os.replace(png + ".tmp.png", png)
         written.append(png)
     for png in written[-3:] if not a.movie else []:
         print(png)
 
     if a.movie:
-        ffmpeg = shutil.which("ffmpeg")
-        if ffmpeg is None:
-            bad_input("--movie needs ffmpeg (Debian package ffmpeg; `make render-deps` installs it)")
         mp4 = os.path.join(dest, a.field + ".mp4")
         pattern = os.path.join(dest, a.field + "_%05d.png")
         cmd = [ffmpeg, "-y", "-loglevel", "error", "-framerate", "10", "-start_number", "0", "-i", pattern,

@@ -72,4 +72,16 @@ frames=$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream
 mkdir -p "$work/empty"
 if "$ryushi" render "$work/empty" 2>"$work/empty.err"; then echo "test-paraview: render of no frames succeeded" >&2; exit 1; fi
 grep -q "no frames" "$work/empty.err" || { echo "test-paraview: unexpected message: $(cat "$work/empty.err")" >&2; exit 1; }
-echo "test-paraview: ryushi render wrote PNGs, a 3-frame MP4 and a 3D slice; refused an empty run"
+# --movie without ffmpeg (none on PATH): exit 2 before any picture (it rendered every PNG first).
+status=0; PATH=/nonexistent "$ryushi" render "$work/wcsph" --movie --dest "$work/no_ffmpeg" 2>"$work/movie.err" || status=$?
+[ "$status" = 2 ] && grep -q "needs ffmpeg, which is not installed" "$work/movie.err" && [ ! -e "$work/no_ffmpeg" ] ||
+  { echo "test-paraview: --movie without ffmpeg: exit $status, $(cat "$work/movie.err")" >&2; exit 1; }
+# A folder that cannot be written (below a file: root writes read-only ones): exit 4 and one
+# line (it was a Python traceback).
+touch "$work/a_file"
+status=0; "$ryushi" render "$work/wcsph" --dest "$work/a_file/render" 2>"$work/dest.err" || status=$?
+[ "$status" = 4 ] && grep -q "^ryushi render: could not write $work/a_file/render: " "$work/dest.err" &&
+  [ "$(wc -l <"$work/dest.err")" = 1 ] ||
+  { echo "test-paraview: render into an unwritable folder: exit $status, $(cat "$work/dest.err")" >&2; exit 1; }
+echo "test-paraview: ryushi render wrote PNGs, a 3-frame MP4 and a 3D slice; refused an empty run, a movie" \
+  "without ffmpeg and an unwritable folder"

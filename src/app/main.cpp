@@ -1,9 +1,8 @@
 // The `ryushi` command line: run, check, keys, render, solve and the verification commands. Exit codes: app/exit_codes.hpp.
-#include <CLI/CLI.hpp>
+#include <malloc.h>
 #include <spdlog/spdlog.h>
 
-#include <malloc.h>
-
+#include <CLI/CLI.hpp>
 #include <cstdio>
 
 #include "app/exit_codes.hpp"
@@ -13,11 +12,22 @@
 #include "app/solve.hpp"
 #include "app/sweep.hpp"
 #include "ryushi_version.hpp"
+#include "scene/registered_keys.hpp"
 #include "scene/schema.hpp"
 #include "verification/free_surface_check.hpp"
 #include "verification/patch_test.hpp"
 
 int main(int argc, char** argv) {
+  // A name registered twice in this build: one line, not an abort in a static initialiser.
+  if (const auto& clashes = ryushi::built_in_registration_clashes(); !clashes.empty()) {
+    std::string names;
+    for (auto& c : clashes) names += (names.empty() ? "" : ", ") + c;
+    std::fprintf(stderr,
+                 "ryushi: internal error: %s registered twice in this build (two registrations take one "
+                 "name; rename one)\n",
+                 names.c_str());
+    return ryushi::kExitInternal;
+  }
   using namespace ryushi;
   // Every step frees and reallocates large buffers (neighbour list, pressure matrix, multigrid
   // hierarchy). glibc serves blocks above its dynamic mmap threshold with fresh, zero-filled

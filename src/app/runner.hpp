@@ -154,7 +154,13 @@ class Runner {
           spdlog::info("resumed at t = {:.6g} s, step {}, frame {}", time_, step_, frames_.size());
       }
       while (time_ < scene_.end_time * (1 - 1e-12)) {
-        if (scene_.max_steps > 0 && step_ >= scene_.max_steps) break;
+        if (scene_.max_steps > 0 && step_ >= scene_.max_steps) {
+          // Not "completed": the end time was not reached (it said so).
+          status = "max_steps";
+          message = "stopped at time.max_steps = " + std::to_string(scene_.max_steps) +
+                    ", t = " + std::to_string(time_) + " s of " + std::to_string(scene_.end_time) + " s";
+          break;
+        }
         if (g_interrupted) {
           status = "interrupted";
           code = kExitInterrupted;

@@ -1,11 +1,14 @@
 #include "app/sweep.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <spdlog/spdlog.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -52,6 +55,15 @@ std::pair<std::string, std::vector<std::string>> parse_vary(const std::string& v
 
 namespace {
 
+// Ctrl-C (SIGINT) or SIGTERM: no new run starts, the running ones are told to stop (they write
+// their checkpoint, exit 130), sweep.csv is written for what finished, and the sweep exits 130.
+// Before, the sweep died at once without its table (or, where its runs did not see the signal,
+// counted the stopped run as failed and started the next).
+volatile std::sig_atomic_t g_sweep_interrupted = 0;
+extern "C" void on_sweep_signal(int) {
+  g_sweep_interrupted = 1;
+}
+
 struct Run {
   std::vector<std::string> values;  // one per varied key
   fs::path dir;
@@ -78,7 +90,8 @@ nlohmann::json read_json(const fs::path& p) {
 
 bool completed(const fs::path& dir) {
   auto s = read_json(dir / "summary.json");
-  return s.is_object() && s.value("status", "") == "completed";
+  // A run stopped at its max_steps is as finished as it will get: kept, not run again.
+  return s.is_object() && (s.value("status", "") == "completed" || s.value("status", "") == "max_steps");
 }
 
 pid_t spawn_run(const std::string& self, const std::vector<std::string>& args, const fs::path& log) {
@@ -171,7 +184,17 @@ int run_sweep(const SweepOptions& o) {
   const std::string self = fs::read_symlink("/proc/self/exe").string();
   std::size_t kept = 0, next = 0, failed = 0;
   std::map<pid_t, std::size_t> active;
+  // Without SA_RESTART (std::signal's glibc default), so that the signal ends the wait() below.
+  struct sigaction stop {
+  }, old_int{}, old_term{};
+  stop.sa_handler = on_sweep_signal;
+  sigemptyset(&stop.sa_mask);
+  sigaction(SIGINT, &stop, &old_int);
+  sigaction(SIGTERM, &stop, &old_term);
+  g_sweep_interrupted = 0;
+  bool told_to_stop = false;
   auto start_next = [&] {
+    if (g_sweep_interrupted) return false;
     while (next < runs.size() && completed(runs[next].dir)) ++next, ++kept;
     if (next >= runs.size()) return false;
     auto& r = runs[next++];
@@ -189,18 +212,30 @@ int run_sweep(const SweepOptions& o) {
   while (!active.empty()) {
     int status = 0;
     pid_t pid = ::wait(&status);
+    if (g_sweep_interrupted && !told_to_stop) {
+      // A terminal's Ctrl-C reaches the runs too; a signal to the sweep alone is passed on.
+      for (auto& [child, index] : active) ::kill(child, SIGINT);
+      told_to_stop = true;
+    }
+    if (pid < 0 && errno == EINTR) continue;
     if (pid < 0) break;
     auto it = active.find(pid);
     if (it == active.end()) continue;
     auto& r = runs[it->second];
     active.erase(it);
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    if (code != kExitDone) ++failed;
+    if (code == kExitInterrupted) g_sweep_interrupted = 1;  // stopped by a signal of its own
+    if (code != kExitDone && code != kExitInterrupted) ++failed;
     if (!o.quiet)
-      spdlog::info("sweep: {} {} (exit {})", r.dir.filename().string(), code == kExitDone ? "done" : "FAILED",
+      spdlog::info("sweep: {} {} (exit {})", r.dir.filename().string(),
+                   code == kExitDone          ? "done"
+                   : code == kExitInterrupted ? "interrupted"
+                                              : "FAILED",
                    code);
     start_next();
   }
+  sigaction(SIGINT, &old_int, nullptr);
+  sigaction(SIGTERM, &old_term, nullptr);
   if (!o.quiet && kept)
     spdlog::info("sweep: {} of {} runs were already complete and kept", kept, runs.size());
 
@@ -270,8 +305,10 @@ int run_sweep(const SweepOptions& o) {
                  "ryushi sweep: no sweep.png (needs Debian's python3-matplotlib: `make py-deps`, and an "
                  "error column)\n");
   if (!o.quiet)
-    std::printf("sweep: %zu runs, %zu failed -> %s\n", runs.size(), failed,
+    std::printf("sweep: %zu runs, %zu failed%s -> %s\n", runs.size(), failed,
+                g_sweep_interrupted ? ", interrupted (run it again to go on)" : "",
                 (out / "sweep.csv").string().c_str());
+  if (g_sweep_interrupted) return kExitInterrupted;
   return failed ? kExitNumericalFailure : kExitDone;
 }
 

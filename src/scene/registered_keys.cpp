@@ -27,13 +27,21 @@ std::unique_ptr<PluginRegistrations>& loading() {
   static std::unique_ptr<PluginRegistrations> p;
   return p;
 }
-// A name taken: thrown, or recorded while a plugin loads.
+std::vector<std::string>& built_in_clashes() {
+  static std::vector<std::string> c;
+  return c;
+}
+// A name taken: recorded, for the plugin loader while a plugin loads, else for main() to report
+// before any command (thrown from a static initialiser, it aborted every command, exit 134).
 bool clash(const std::string& what) {
-  if (!loading()) throw std::logic_error(what + " registered twice");
-  loading()->clashes.push_back(what);
+  (loading() ? loading()->clashes : built_in_clashes()).push_back(what);
   return false;
 }
 }  // namespace
+
+const std::vector<std::string>& built_in_registration_clashes() {
+  return built_in_clashes();
+}
 
 void begin_plugin_registrations() {
   loading() = std::make_unique<PluginRegistrations>();

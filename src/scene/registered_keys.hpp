@@ -100,8 +100,8 @@ struct MethodSpec {
   MethodHooks hooks;
 };
 
-// Throws std::logic_error for a name registered twice (while a plugin loads: records it and
-// returns false, see begin_plugin_registrations).
+// False for a name registered twice, which is recorded: while a plugin loads for the plugin
+// loader (begin_plugin_registrations), else in built_in_registration_clashes().
 bool register_method_spec(const std::string& name, MethodSpec spec);
 void unregister_method_spec(const std::string& name);  // a plugin that failed to load
 std::vector<std::string> method_spec_names();          // sorted
@@ -129,6 +129,9 @@ struct PluginRegistrations {
   std::vector<std::string> methods, systems;  // registered while the plugin loaded
   std::vector<std::string> clashes;           // e.g. "method 'wcsph'"
 };
+// Names registered twice by the program itself (two of its translation units, or an in-tree
+// extension, taking one name), e.g. "method 'wcsph'": main() refuses to run with any.
+const std::vector<std::string>& built_in_registration_clashes();
 void begin_plugin_registrations();
 PluginRegistrations end_plugin_registrations();
 
