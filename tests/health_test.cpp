@@ -122,3 +122,18 @@ TEST_CASE("health: a kernel support too small for the lattice is refused at chec
                           " --set particles.smoothing_ratio=0.9")
             .code == kExitDone);
 }
+
+// WCSPH's leapfrog above its acoustic limit (docs/stability.md: a resting tank holds at CFL 0.5,
+// is noisy at 0.7, fails at 0.85): refused at the key, pointing to the midpoint, which holds to 1.
+TEST_CASE("health: a CFL beyond the WCSPH integrator's stable range is refused at check time") {
+  std::string bin = RYUSHI_BINARY;
+  const std::string scene = test::scene_path("dam_break_2d.toml");
+  auto r = test::run_command(bin + " check " + scene + " --set time.cfl=0.6");
+  CHECK(r.code == kExitBadInput);
+  CHECK_MESSAGE(r.output.find("--set time.cfl=0.6: time.cfl = 0.6 is beyond the leapfrog integrator's stable "
+                              "range (at most 0.5") != std::string::npos,
+                r.output);
+  CHECK(test::run_command(bin + " check " + scene + " --set time.cfl=0.5").code == kExitDone);
+  CHECK(test::run_command(bin + " check " + scene + " --set time.cfl=0.6 --set method.integrator=\\\"midpoint\\\"")
+            .code == kExitDone);
+}
