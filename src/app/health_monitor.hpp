@@ -231,6 +231,16 @@ class HealthMonitor {
     return std::nullopt;
   }
 
+  // The state a checkpoint carries, so that a resumed run keeps the original start's energy and
+  // scales and the density check's timer (what prepare() would take from the resumed state).
+  std::vector<double> state() const {
+    return {energy0_, energy_scale_, pressure_scale_, compressed_since_, check_energy_ ? 1.0 : 0.0};
+  }
+  void restore(const std::vector<double>& s) {
+    if (s.size() != 5) return;  // another version's layout: keep the resumed state's
+    energy0_ = s[0], energy_scale_ = s[1], pressure_scale_ = s[2], compressed_since_ = s[3];
+    check_energy_ = check_energy_ && s[4] != 0;
+  }
   double pressure_scale() const { return pressure_scale_; }
   double energy_scale() const { return check_energy_ ? energy_scale_ : 0.0; }
 

@@ -42,6 +42,7 @@ Checkpoint Runner<D>::checkpoint_state() const {
   }
   for (auto& system : scheduler_->pipeline())
     c.system_states.push_back({system->name(), system->checkpoint_state(world_, res_)});
+  c.monitor_state = health_.state();
   return c;
 }
 
@@ -92,6 +93,7 @@ void Runner<D>::restore() {
                        " belongs to another run (run id " + run_id_hex(id) + ", the checkpoint's " +
                        run_id_hex(run_id_) + ")");
   }
+  restored_monitor_ = c.monitor_state;
   restored_order_ = c.cell_order;
   auto& pipeline = scheduler_->pipeline();
   if (c.system_states.size() != pipeline.size())

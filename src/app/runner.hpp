@@ -94,8 +94,10 @@ class Runner {
     if (h.index != HealthCheck<D>::kNone)
       throw SceneError(scene_.path + ": the initial state is invalid: particle id " +
                        std::to_string(world_.column(components::id)[h.index]) + " " + h.problem);
-    // After a resume the scales and the energy's start are the restored state's.
+    // After a resume: the scales, the energy's start and the density's timer are the original
+    // run's, as the checkpoint holds them (older checkpoints: the restored state's).
     health_.prepare(scene_, world_, context_);
+    if (!restored_monitor_.empty()) health_.restore(restored_monitor_);
     // A fresh run into a directory that holds another run's files: that run's checkpoint would
     // later resume into this run's frames (issue 51: frames of two scenes, a particles.xdmf
     // pointing at missing files).
@@ -411,6 +413,7 @@ class Runner {
   std::vector<std::string> frame_fields_;  // [output] fields and what the method adds (temperature, ...)
   bool density_may_vanish_ = false;
   HealthMonitor<D> health_;
+  std::vector<double> restored_monitor_;      // the checkpoint's health monitor state
   std::set<std::string> health_warned_;       // the checks that warned (action = "warn")
   std::vector<std::string> health_warnings_;  // their messages, for summary.json
   fs::path out_;

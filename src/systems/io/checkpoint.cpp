@@ -129,6 +129,7 @@ void write_checkpoint(const std::filesystem::path& path, const World<D>& world, 
       write_raw(file, "system_state_" + std::to_string(k), H5T_NATIVE_DOUBLE, st.data(), {st.size()});
     }
     write_string(file, "system_names", system_names);
+    write_raw(file, "monitor_state", H5T_NATIVE_DOUBLE, c.monitor_state.data(), {c.monitor_state.size()});
     std::string profile_names;
     std::vector<double> calls, totals;
     for (auto& e : c.profile) {
@@ -221,6 +222,8 @@ Checkpoint read_checkpoint_header(const std::filesystem::path& path) {
       c.system_states.push_back(
           {system_names[k],
            read_raw<double>(file.id, "system_state_" + std::to_string(k), H5T_NATIVE_DOUBLE)});
+    if (H5Lexists(file.id, "monitor_state", H5P_DEFAULT) > 0)
+      c.monitor_state = read_raw<double>(file.id, "monitor_state", H5T_NATIVE_DOUBLE);
     if (H5Lexists(file.id, "profile_names", H5P_DEFAULT) > 0) {
       auto names = split(read_string(file.id, "profile_names"), '\n');
       auto calls = read_raw<double>(file.id, "profile_calls", H5T_NATIVE_DOUBLE);

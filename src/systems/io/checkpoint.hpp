@@ -50,6 +50,9 @@ struct Checkpoint {
   std::vector<std::pair<std::string, std::vector<double>>> system_states;
   // The profiler's entries so far (calls and seconds per system and driver task).
   std::vector<Profiler::Entry> profile;
+  // The driver's health monitor (its energy's start, scales and timers; empty in checkpoints
+  // written before 2026-11-29, whose resumes count from the resumed state).
+  std::vector<double> monitor_state;
 };
 
 template <int D>
