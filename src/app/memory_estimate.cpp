@@ -1,5 +1,8 @@
 #include "app/memory_estimate.hpp"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -135,6 +138,14 @@ AvailableMemory available_memory() {
     if (key == "MemAvailable:") m = {kib * 1024, "MemAvailable in /proc/meminfo"};
   const double cgroup = cgroup_headroom();
   if (cgroup < m.bytes) m = {std::max(0.0, cgroup), "the cgroup's memory limit less its usage"};
+  // `ulimit -v` (RLIMIT_AS) less the address space the process holds already.
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+    double pages = 0;
+    std::ifstream("/proc/self/statm") >> pages;
+    const double headroom = double(limit.rlim_cur) - pages * double(sysconf(_SC_PAGESIZE));
+    if (headroom < m.bytes) m = {std::max(0.0, headroom), "ulimit -v less the address space in use"};
+  }
   return m;
 }
 

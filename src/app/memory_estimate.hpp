@@ -3,7 +3,8 @@
 // estimated from its geometry (lattice cells of the fluid blocks, wall shells and body layers,
 // imported particles) and multiplied by the method's measured peak bytes per particle
 // (MethodHooks::bytes_per_particle); a scene that would need more than the memory available to
-// this process (MemAvailable, and the cgroup's limit less its usage) is bad input, refused
+// this process (MemAvailable, the cgroup's limit less its usage, ulimit -v less the address
+// space in use) is bad input, refused
 // before it ends in std::bad_alloc or the kernel's OOM killer.
 #include <cstddef>
 #include <string>
