@@ -11,7 +11,7 @@ PY_PACKAGES := python3-numpy python3-h5py python3-matplotlib python3-scipy
 PV_PACKAGES := paraview python3-paraview xvfb xauth ffmpeg
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps py-deps pv-deps render-deps build run test test-paraview test-sanitize bench plots tradeoffs docs fuzz clean
+.PHONY: all deps py-deps pv-deps render-deps build run test test-paraview test-sanitize bench plots tradeoffs docs fuzz fuzz-check clean
 
 all: build
 
@@ -91,8 +91,13 @@ plots: build py-deps
 tradeoffs: build py-deps
 	/usr/bin/python3 tools/tradeoffs.py --build $(BUILD) --out out/tradeoffs --doc docs/tradeoffs.md
 
-# libFuzzer on the scene loader (fuzz/README.md); new coverage is merged into fuzz/corpus/.
+# Seeded scene mutations through `ryushi check` (tools/fuzz_check.py; 300 of them run in make test).
+FUZZ_CHECK_COUNT ?= 1000
+fuzz-check: build
+	/usr/bin/python3 tools/fuzz_check.py $(BUILD)/ryushi --count $(FUZZ_CHECK_COUNT) --keep fuzz/check-findings
+
 FUZZ_SECONDS ?= 600
+# libFuzzer on the scene loader (fuzz/README.md); new coverage is merged into fuzz/corpus/.
 fuzz: deps
 	@dpkg -s clang >/dev/null 2>&1 || { $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq clang; }
 	cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_COMPILER=clang -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRYUSHI_FUZZ=ON
