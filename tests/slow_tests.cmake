@@ -2,94 +2,85 @@
 # `ctest -LE slow` for the quick ones) and given their measured cost in seconds: on a clean
 # clone ctest has no timings yet and would start them in declaration order, leaving the
 # 3D dam break (35 s) to run alone at the end; with COST it starts them first, beside the quick
-# tests. A renamed test makes ctest stop with "Can not find test": update the name here.
-set_tests_properties(
-  "validation: 3D dam break front meets the criterion, follows the 2D front and stays in its tank"
-  PROPERTIES LABELS slow COST 35)
-set_tests_properties(
-  "validation: 2D dam break surge front follows Martin and Moyce, runs past the impact, keeps its volume"
-  PROPERTIES LABELS slow COST 54)
-set_tests_properties(
-  "isph: dam break front meets the criterion at a/d = 20 and 40 and runs through the impact to t = 2 s"
-  PROPERTIES LABELS slow COST 14)
-set_tests_properties("isph: a resting tank keeps rho g depth and stays still" PROPERTIES LABELS slow COST 27)
-set_tests_properties("isph: a resting 3D tank stays at rest for 3 s (its vertical edges stay dry above the water)"
-                     PROPERTIES LABELS slow COST 40)
-set_tests_properties("mps: 3D dam break front meets the criterion and stays in its tank through the impact"
-                     PROPERTIES LABELS slow COST 8)
-set_tests_properties("mps: dam break runs past the far-wall impact and keeps its density" PROPERTIES LABELS slow COST 16)
-set_tests_properties("isph poiseuille: the Eulerian 3D pipe follows the Bessel start-up and converges at l/d = 10, 16, 20"
-                     PROPERTIES LABELS slow COST 50)
-set_tests_properties("energy: a WCSPH sloshing tank never gains energy and keeps the linear period"
-                     PROPERTIES LABELS slow COST 14)
-set_tests_properties(
-  "energy: an ISPH sloshing tank never gains energy (known to fail: the paper set-up gains and stops)"
-  PROPERTIES LABELS slow COST 12)
-set_tests_properties("validation: WCSPH dam break with Fickian shifting keeps the front and the particles apart"
-                     PROPERTIES LABELS slow COST 13)
-set_tests_properties("energy: an ISPH sloshing tank with the violent-flow set-up never gains energy and keeps the period"
-                     PROPERTIES LABELS slow COST 18)
-set_tests_properties("validation: the WCSPH dam break is the same with and without a Verlet skin"
-                     PROPERTIES LABELS slow COST 25)
-set_tests_properties("validation: the MPS and ISPH dam breaks are the same with and without a Verlet skin"
-                     PROPERTIES LABELS slow COST 20)
-set_tests_properties("checkpoint: a run killed at random moments and resumed ends bit-identical to an unstopped run"
-                     PROPERTIES LABELS slow COST 10)
-set_tests_properties("checkpoint: SIGINT stops a checkpointed run with a checkpoint where it stopped, and resume finishes it"
-                     PROPERTIES LABELS slow COST 8)
-set_tests_properties("extension: the out-of-tree example builds against an installed ryushi and runs as a plugin"
-                     PROPERTIES LABELS slow COST 60)
+# tests. ctest reads this file after the discovered tests (tests/CMakeLists.txt).
+#
+# set_tests_properties() on a name that no test has is silently ignored, and ctest's `if(TEST)`
+# sees no test (its add_test is not CMake's): two renamed tests once lost their label and cost
+# unnoticed (test audit round three, issue 50, row 10). So each name goes through slow() below,
+# and the end of this file checks them against the lists that doctest_discover_tests() defines
+# (<target>_TESTS): a stale name stops ctest with an error naming it.
+set(_ryushi_slow_names "")
+# slow(<test name> <cost in s> [stability]): the labels slow (and stability: set_tests_properties
+# replaces the label the stability executable's tests were discovered with) and the cost.
+function(slow name cost)
+  set(labels slow)
+  if(ARGN STREQUAL "stability")
+    set(labels "stability;slow")
+  endif()
+  set_tests_properties("${name}" PROPERTIES LABELS "${labels}" COST ${cost})
+  set(_ryushi_slow_names ${_ryushi_slow_names} "${name}" PARENT_SCOPE)
+endfunction()
+slow("validation: 3D dam break front meets the criterion, follows the 2D front and stays in its tank" 35)
+slow("validation: 2D dam break surge front follows Martin and Moyce, runs past the impact, keeps its volume" 54)
+slow("isph: dam break front meets the criterion at a/d = 20 and 40 and runs through the impact to t = 2 s" 14)
+slow("isph: a resting tank keeps rho g depth and stays still" 27)
+slow("isph: a resting 3D tank stays at rest for 3 s (its vertical edges stay dry above the water)" 40)
+slow("mps: 3D dam break front meets the criterion and stays in its tank through the impact" 8)
+slow("mps: dam break runs past the far-wall impact and keeps its density" 16)
+slow("isph poiseuille: the Eulerian 3D pipe follows the Bessel start-up and converges at l/d = 10, 16, 20" 50)
+slow("energy: a WCSPH sloshing tank never gains energy and keeps the linear period" 14)
+slow("energy: an ISPH sloshing tank never gains energy (known to fail: the paper set-up gains and stops)" 12)
+slow("validation: WCSPH dam break with Fickian shifting keeps the front and the particles apart" 13)
+slow("energy: an ISPH sloshing tank with the violent-flow set-up never gains energy and keeps the period" 18)
+slow("validation: the WCSPH dam break is the same with and without a Verlet skin" 25)
+slow("validation: the MPS and ISPH dam breaks are the same with and without a Verlet skin" 20)
+slow("checkpoint: a run killed at random moments and resumed ends bit-identical to an unstopped run" 10)
+slow("checkpoint: SIGINT stops a checkpointed run with a checkpoint where it stopped, and resume finishes it" 8)
+slow("extension: the out-of-tree example builds against an installed ryushi and runs as a plugin" 60)
 # Stability cases (tests/stability/) that are also slow keep both labels.
-set_tests_properties("stability: a WCSPH sloshing tank run for 200 periods never gains energy"
-                     PROPERTIES LABELS "stability;slow" COST 170)
-set_tests_properties("stability: an MPS sloshing tank never gains energy over 200 periods, its jitter falls with resolution"
-                     PROPERTIES LABELS "stability;slow" COST 260)
-set_tests_properties("stability: an ISPH sloshing tank (violent-flow set-up, full-support compression) never gains energy over 200 periods at H/d = 20, its jitter falls with resolution"
-                     PROPERTIES LABELS "stability;slow" COST 440)
-set_tests_properties("stability: a 2D tank of a million particles takes one step on one thread under WCSPH, MPS and ISPH"
-                     PROPERTIES LABELS "stability;slow" COST 16)
-set_tests_properties("stability: WCSPH at a fixed step of 1x its acoustic limit keeps the tank, 2x keeps it or fails cleanly"
-                     PROPERTIES LABELS "stability;slow" COST 16)
-set_tests_properties("stability: MPS at a fixed step of 1x its CFL limit keeps the tank, 2x keeps it or fails cleanly"
-                     PROPERTIES LABELS "stability;slow" COST 14)
-set_tests_properties("stability: ISPH at a fixed step of 1x its CFL limit keeps the tank, 2x keeps it or fails cleanly"
-                     PROPERTIES LABELS "stability;slow" COST 12)
-set_tests_properties("stability: an MPS tank started with 30% disorder settles" PROPERTIES LABELS "stability;slow" COST 10)
-set_tests_properties("stability: a WCSPH tank started with 30% disorder settles" PROPERTIES LABELS "stability;slow" COST 10)
-set_tests_properties("solid: a piston wave maker makes the waves of linear wave-maker theory (WCSPH)"
-                     PROPERTIES LABELS slow COST 40)
-set_tests_properties("solid: MPS and ISPH read the sliding plate's drag from their own wall layer"
-                     PROPERTIES LABELS slow COST 14)
-set_tests_properties("container: a tank accelerating upwards is the tank at rest under g + a (WCSPH wall acceleration)"
-                     PROPERTIES LABELS slow COST 10)
-set_tests_properties("container: water at rest in a round tank keeps rho g depth (ISPH, a ring wall)"
-                     PROPERTIES LABELS slow COST 9)
-set_tests_properties("rheology: power-law Poiseuille flows (n = 0.5 and 1.5) reach their analytic steady profiles within 2%"
-                     PROPERTIES LABELS slow COST 22)
-set_tests_properties("rheology: a Bingham Poiseuille flow reaches the analytic plug profile within 2%"
-                     PROPERTIES LABELS slow COST 18)
-set_tests_properties("heat: a hot fluid cooling on a cold plate follows the Arrhenius law particle by particle and slows"
-                     PROPERTIES LABELS slow COST 12)
-set_tests_properties("heat: a heat-flux wall and a fixed-temperature plate follow their series to the steady slope q/k"
-                     PROPERTIES LABELS slow COST 10)
-set_tests_properties("leapfrog: one force evaluation per step, the dam-break criterion and the same front as the midpoint"
-                     PROPERTIES LABELS slow COST 12)
-set_tests_properties("energy: a WCSPH sloshing tank with the midpoint integrator never gains energy and keeps the linear period"
-                     PROPERTIES LABELS slow COST 14)
-set_tests_properties("elastic: a clamped plate swings at the Euler-Bernoulli period within 5% at H/d = 16 and 20"
-                     PROPERTIES LABELS slow COST 50)
-set_tests_properties("elastic: the plate keeps its energy over ten periods" PROPERTIES LABELS slow COST 20)
-set_tests_properties("elastic: seed 002's drifting block hits the elastic plate, goes over it and the run holds to t = 0.5 s"
-                     PROPERTIES LABELS slow COST 25)
-set_tests_properties("elastic: seed 002's updated form keeps a block on a wall and swings the plate, softer than the total Lagrangian form"
-                     PROPERTIES LABELS slow COST 15)
-set_tests_properties("solid: an ISPH piston wave maker makes the waves of linear wave-maker theory at h/d = 20"
-                     PROPERTIES LABELS slow COST 100)
-set_tests_properties("container: water in a round tank stays at rest to t = 5 s (ISPH, a ring wall, known to fail)"
-                     PROPERTIES LABELS slow COST 10)
-set_tests_properties("isph: the one-set-up candidate meets the dam-break criterion and runs through the impact"
-                     PROPERTIES LABELS slow COST 22)
-set_tests_properties("isph: a resting tank keeps rho g depth and stays still with the one-set-up candidate"
-                     PROPERTIES LABELS slow COST 12)
-set_tests_properties("energy: an ISPH sloshing tank with the one-set-up candidate never gains energy and keeps the period"
-                     PROPERTIES LABELS slow COST 12)
+slow("stability: a WCSPH sloshing tank run for 200 periods never gains energy" 170 stability)
+slow("stability: an MPS sloshing tank never gains energy over 200 periods, its jitter falls with resolution" 260 stability)
+slow("stability: an ISPH sloshing tank (violent-flow set-up, full-support compression) never gains energy over 200 periods at H/d = 20, its jitter falls with resolution" 440 stability)
+slow("stability: a 2D tank of a million particles takes one step on one thread under WCSPH, MPS and ISPH" 16 stability)
+slow("stability: WCSPH at a fixed step of 1x its acoustic limit keeps the tank, 2x keeps it or fails cleanly" 16 stability)
+slow("stability: MPS at a fixed step of 1x its CFL limit keeps the tank, 2x keeps it or fails cleanly" 14 stability)
+slow("stability: ISPH at a fixed step of 1x its CFL limit keeps the tank, 2x keeps it or fails cleanly" 12 stability)
+slow("stability: an MPS tank started with 30% disorder settles" 10 stability)
+slow("stability: a WCSPH tank started with 30% disorder settles" 10 stability)
+slow("solid: a piston wave maker makes the waves of linear wave-maker theory (WCSPH)" 40)
+slow("solid: MPS and ISPH read the sliding plate's drag from their own wall layer" 14)
+slow("container: a tank accelerating upwards is the tank at rest under g + a (WCSPH wall acceleration)" 10)
+slow("container: water at rest in a round tank keeps rho g depth (ISPH, Adami walls)" 9)
+slow("rheology: power-law Poiseuille flows (n = 0.5 and 1.5) reach their analytic steady profiles within 2%" 22)
+slow("rheology: a Bingham Poiseuille flow reaches the analytic plug profile within 2%" 18)
+slow("heat: a hot fluid cooling on a cold plate follows the Arrhenius law particle by particle and slows" 12)
+slow("heat: a heat-flux wall and a fixed-temperature plate follow their series to the steady slope q/k" 10)
+slow("leapfrog: one force evaluation per step, the dam-break criterion and the same front as the midpoint" 12)
+slow("energy: a WCSPH sloshing tank with the midpoint integrator never gains energy and keeps the linear period" 14)
+slow("elastic: a clamped plate swings at the Euler-Bernoulli period within 5% at H/d = 16 and 20" 50)
+slow("elastic: the plate keeps its energy over ten periods" 20)
+slow("elastic: seed 002's drifting block hits the elastic plate, goes over it and the run holds to t = 0.5 s" 25)
+slow("elastic: seed 002's updated form keeps a block on a wall and swings the plate, softer than the total Lagrangian form" 15)
+slow("solid: an ISPH piston wave maker makes the waves of linear wave-maker theory at h/d = 20" 100)
+slow("container: water in a round tank stays at rest to t = 5 s (ISPH, Adami walls)" 10)
+slow("isph: the one-set-up candidate meets the dam-break criterion and runs through the impact" 22)
+slow("isph: a resting tank keeps rho g depth and stays still with the one-set-up candidate" 12)
+slow("energy: an ISPH sloshing tank with the one-set-up candidate never gains energy and keeps the period" 12)
+
+# The check: every name above is a test of ryushi_tests or ryushi_stability_tests. Skipped when an
+# executable is not built yet (its list is undefined and ctest shows it as *_NOT_BUILT).
+if(DEFINED ryushi_tests_TESTS AND DEFINED ryushi_stability_tests_TESTS)
+  set(_ryushi_slow_missing "")
+  foreach(_name IN LISTS _ryushi_slow_names)
+    list(FIND ryushi_tests_TESTS "${_name}" _in_tests)
+    list(FIND ryushi_stability_tests_TESTS "${_name}" _in_stability)
+    if(_in_tests EQUAL -1 AND _in_stability EQUAL -1)
+      string(APPEND _ryushi_slow_missing "\n  \"${_name}\"")
+    endif()
+  endforeach()
+  if(_ryushi_slow_missing)
+    message(FATAL_ERROR "tests/slow_tests.cmake names tests that do not exist (renamed?); update the names "
+                        "from `ryushi_tests --list-test-cases` / `ryushi_stability_tests --list-test-cases`:"
+                        "${_ryushi_slow_missing}")
+  endif()
+endif()
