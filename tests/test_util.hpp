@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -32,6 +33,15 @@ inline fs::path scratch(const std::string& name) {
 inline fs::path unique_scratch(const std::string& prefix) {
   static std::atomic<int> counter{0};
   return scratch(prefix + "_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+}
+
+// |value / expected - 1| <= tolerance, written without the division (expected = 0 asks for 0;
+// NaN fails). Not doctest's Approx(expected).epsilon(tolerance): that passes when
+// |value - expected| < tolerance * (1 + max(|value|, |expected|)), so for |expected| << 1 the
+// bound is about `tolerance` in absolute terms (a "5%" check on 1.12e-5 m accepted +-0.05 m),
+// and near 1 it is about twice the tolerance (test audit round three, issue 50).
+inline bool within_relative(double value, double expected, double tolerance) {
+  return std::abs(value - expected) <= tolerance * std::abs(expected);
 }
 
 inline std::string read_text(const fs::path& p) {
