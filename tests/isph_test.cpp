@@ -45,11 +45,18 @@ void check_resting_tank(const std::string& label, const std::vector<std::string>
   for (auto [name, depth] : {std::pair{"p_depth_0.10", 0.10}, {"p_depth_0.25", 0.25}, {"p_depth_0.40", 0.40},
                              {"p_depth_0.45", 0.45}}) {
     REQUIRE_MESSAGE(probes[name].size() > 10, name);
+    // The issue's 0.5% on every sample, so that a NaN (an empty support, probes.cpp) fails:
+    // std::max(worst, NaN) would drop it.
     double worst = 0;
-    for (std::size_t k = 0; k < probes["time"].size(); ++k)
-      if (probes["time"][k] >= 0.5) worst = std::max(worst, std::abs(probes[name][k] / (rho_g * depth) - 1));
+    std::size_t samples = 0;
+    for (std::size_t k = 0; k < probes["time"].size(); ++k) {
+      if (probes["time"][k] < 0.5) continue;
+      const double deviation = std::abs(probes[name][k] / (rho_g * depth) - 1);
+      CHECK_MESSAGE(deviation < 0.005, name << " at t = " << probes["time"][k] << ": " << probes[name][k]);
+      worst = std::max(worst, deviation), ++samples;
+    }
     MESSAGE(label, ", ", std::string(name), ": largest deviation from rho g depth over t = 0.5-2 s: ", worst);
-    CHECK(worst < 0.005);  // the issue's 0.5%
+    REQUIRE(samples > 10);
   }
   // Speeds after settling, from the last frame: below the surface row the water is still.
   auto last = out / "frames" / "frame_00020.h5";
@@ -254,9 +261,11 @@ TEST_CASE("isph: the compression error reads a dilation both ways only over a fu
   const double dilated = error_at(1.001, CompressionDensity::FullSupport, interior);
   const double compressed = error_at(0.999, CompressionDensity::FullSupport, interior);
   MESSAGE("full support: dilated 0.1% reads ", dilated, ", compressed ", compressed);
-  CHECK(dilated == doctest::Approx(std::pow(1.001, -2) - 1).epsilon(0.02));
-  CHECK(compressed == doctest::Approx(std::pow(0.999, -2) - 1).epsilon(0.02));
-  CHECK(error_at(1.001, CompressionDensity::FullSupport, on_floor) == doctest::Approx(dilated).epsilon(0.02));
+  CHECK_MESSAGE(test::within_relative(dilated, std::pow(1.001, -2) - 1, 0.02), "dilated " << dilated);
+  CHECK_MESSAGE(test::within_relative(compressed, std::pow(0.999, -2) - 1, 0.02),
+                "compressed " << compressed);
+  const double floor_dilated = error_at(1.001, CompressionDensity::FullSupport, on_floor);
+  CHECK_MESSAGE(test::within_relative(floor_dilated, dilated, 0.02), "on the floor " << floor_dilated);
   CHECK(error_at(1.001, CompressionDensity::FirstShell, interior) == 0.0);
   CHECK(error_at(0.999, CompressionDensity::FirstShell, interior) > 0.0);
   CHECK(error_at(1.001, CompressionDensity::FullSupport, under_surface) == 0.0);  // the first shell's
@@ -337,11 +346,18 @@ TEST_CASE("isph: a resting 3D tank keeps rho g depth") {
   opt.quiet = true;
   REQUIRE(run_scene(opt) == kExitDone);
   auto probes = test::read_csv(out / "probes.csv");
+  REQUIRE(probes["time"].back() >= 0.3 - 1e-9);  // the scene's end: the window below is not empty
   double worst = 0;
-  for (std::size_t k = 0; k < probes["time"].size(); ++k)
-    if (probes["time"][k] >= 0.2) worst = std::max(worst, std::abs(probes["p_depth_0.1"][k] / 981.0 - 1));
-  MESSAGE("3D: largest deviation from rho g depth over t = 0.2-0.3 s: ", worst);
-  CHECK(worst < 0.005);
+  std::size_t samples = 0;
+  for (std::size_t k = 0; k < probes["time"].size(); ++k) {
+    if (probes["time"][k] < 0.2) continue;
+    const double deviation = std::abs(probes["p_depth_0.1"][k] / 981.0 - 1);  // NaN fails here
+    CHECK_MESSAGE(deviation < 0.005,
+                  "t = " << probes["time"][k] << ": " << probes["p_depth_0.1"][k] << " Pa");
+    worst = std::max(worst, deviation), ++samples;
+  }
+  MESSAGE("3D: largest deviation from rho g depth over t = 0.2-0.3 s: ", worst, " in ", samples, " samples");
+  REQUIRE(samples >= 10);  // every 0.01 s
 }
 
 // The same tank left for 3 s (21 sqrt(H/g)): it must stay at rest. Before the wetting rule took a
