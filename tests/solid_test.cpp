@@ -51,8 +51,8 @@ std::size_t check_couette_drag(const std::filesystem::path& probes, double toler
   for (std::size_t k = 0; k < t.size(); ++k) {
     if (t[k] < 0.1 - 1e-9) continue;
     CAPTURE(t[k]);
-    CHECK(drag[k] / (-mu * U / H * L * couette_shear_ratio(t[k], H, nu)) ==
-          doctest::Approx(1.0).epsilon(tolerance));
+    const double ratio = drag[k] / (-mu * U / H * L * couette_shear_ratio(t[k], H, nu));
+    CHECK_MESSAGE(test::within_relative(ratio, 1.0, tolerance), "drag / series " << ratio);
     ++checked;
   }
   return checked;
@@ -230,7 +230,8 @@ TEST_CASE("solid: a dam break pushes on an obstacle from when its front arrives"
   // the block's first wall layer (d/2 inside its faces; a centre grazing the upstream top corner
   // comes within 0.07 d of it with either integrator), every particle still there.
   const double d = 0.0125;
-  for (int k = 0;; ++k) {
+  int k = 0;
+  for (;; ++k) {
     const auto frame = test::frame_path(dir, k);
     if (!std::filesystem::exists(frame)) break;
     auto kind = test::read_dataset(frame, "kind").values, x = test::read_dataset(frame, "position").values;
@@ -244,6 +245,7 @@ TEST_CASE("solid: a dam break pushes on an obstacle from when its front arrives"
     CHECK(fluid == 20 * 40);
     CHECK(inside == 0);
   }
+  REQUIRE_MESSAGE(k == 21, k << " frames checked");  // t = 0 to 0.4 s every 0.02 s: none skipped
 }
 
 TEST_CASE("solid: bad geometry is bad input naming the solid and the problem") {
@@ -329,12 +331,14 @@ TEST_CASE("solid: a piston wave maker makes the waves of linear wave-maker theor
   auto r = test::run_command(bin() + " run " + test::scene_path("wave_flume_2d.toml") + " --quiet --out " +
                              dir.string() + " --set particles.spacing=0.02 --set time.end=5");
   REQUIRE_MESSAGE(r.code == 0, r.output);
-  CHECK(biesel_height() == doctest::Approx(0.0406).epsilon(0.001));
+  CHECK_MESSAGE(test::within_relative(biesel_height(), 0.0406, 0.001), "Biesel height " << biesel_height());
   auto csv = test::read_csv(dir / "probes.csv");
-  for (double h : wave_heights(csv, "eta_0.6m")) CHECK(h == doctest::Approx(1.0).epsilon(0.10));
+  for (double h : wave_heights(csv, "eta_0.6m"))
+    CHECK_MESSAGE(test::within_relative(h, 1.0, 0.10), "height over Biesel's " << h);
   // The force on the paddle over whole periods: the water's hydrostatic thrust -rho g h^2 / 2 =
   // -196 N/m (the waves' mean momentum flux adds about 1%); within 10%, measured -188 N/m.
-  CHECK(mean_paddle_force(csv) == doctest::Approx(-1000 * 9.81 * 0.2 * 0.2 / 2).epsilon(0.10));
+  CHECK_MESSAGE(test::within_relative(mean_paddle_force(csv), -1000 * 9.81 * 0.2 * 0.2 / 2, 0.10),
+                "mean paddle force " << mean_paddle_force(csv) << " N/m");
 }
 
 // The same flume under ISPH (scenes/wave_flume_isph_2d.toml: the violent-flow set-up, h / d = 20),
@@ -355,11 +359,14 @@ TEST_CASE("solid: an ISPH piston wave maker makes the waves of linear wave-maker
     auto heights = wave_heights(csv, probe);
     MESSAGE(std::string(probe), ": heights over Biesel's in periods 2-4: ", heights[0], ", ", heights[1],
             ", ", heights[2]);
+    // audit row 5: measured 0.861 (eta_1m, period 2; the others 0.984-1.064), the relative bound
+    // fails; left for review. This is still doctest's Approx, which accepts 0.80-1.22, not 10%.
     for (double h : heights) CHECK(h == doctest::Approx(1.0).epsilon(0.10));
   }
   MESSAGE("mean force on the paddle over t = 2-5 s: ", mean_paddle_force(csv),
           " N/m (hydrostatic thrust -196 N/m)");
-  CHECK(mean_paddle_force(csv) == doctest::Approx(-1000 * 9.81 * 0.2 * 0.2 / 2).epsilon(0.10));
+  CHECK_MESSAGE(test::within_relative(mean_paddle_force(csv), -1000 * 9.81 * 0.2 * 0.2 / 2, 0.10),
+                "mean paddle force " << mean_paddle_force(csv) << " N/m");
 }
 
 TEST_CASE(
@@ -389,7 +396,8 @@ TEST_CASE(
     if (body[i] != 0) continue;
     ++moved;
     CHECK(x[3 * i] - o[3 * i] == doctest::Approx(0.1).epsilon(1e-12));
-    CHECK(x[3 * i + 1] - o[3 * i + 1] == doctest::Approx(0.025).epsilon(0.01));  // t - dt for t = 1.5
+    CHECK_MESSAGE(test::within_relative(x[3 * i + 1] - o[3 * i + 1], 0.025, 0.01),  // t - dt for t = 1.5
+                  "dy " << x[3 * i + 1] - o[3 * i + 1]);
     CHECK(v[3 * i] == 0.0);
     CHECK(v[3 * i + 1] == doctest::Approx(0.05).epsilon(1e-12));
   }
