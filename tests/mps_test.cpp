@@ -88,8 +88,13 @@ TEST_CASE("mps: hydrostatic tank, mean pressure follows rho g depth") {
   // particles it reads high.
   MESSAGE("interior density ", test::json_number(summary, "interior_density_ratio"), " rho0, n*/n0 ",
           test::json_number(summary, "interior_number_density_ratio"));
+  // With no pressure unknown the ratio reads 1.0 (src/methods/mps.cpp): the count must not be 0.
+  REQUIRE(test::json_number(summary, "interior_particles") > 0);
   CHECK(std::abs(test::json_number(summary, "interior_density_ratio") - 1) < 0.002);
-  CHECK(test::json_number(summary, "max_relative_residual") <= 1e-8);
+  // A solve that misses the tolerance stops the run (linear_solve.hpp): what is left to check is
+  // that every step solved, and did work.
+  CHECK(test::json_number(summary, "solves") >= test::json_number(summary, "steps"));
+  CHECK(test::json_number(summary, "max_iterations") >= 1);
   // The fluid volume: in a tank of fixed width it is the width times the water level (probe
   // `surface`). The level jitters by up to 0.5 l0 from sample to sample (the surface particles'
   // noise) but its mean over the second second must stay where it started: measured -0.045 l0
@@ -164,6 +169,7 @@ TEST_CASE("mps: dam break runs past the far-wall impact and keeps its density") 
   // The interior's density just after the impact (a/l0 = 20, T = 3.8); bound as in the tank.
   MESSAGE("interior density ", test::json_number(summary, "interior_density_ratio"), " rho0, n*/n0 ",
           test::json_number(summary, "interior_number_density_ratio"));
+  REQUIRE(test::json_number(summary, "interior_particles") > 0);  // else the ratio reads 1.0
   CHECK(std::abs(test::json_number(summary, "interior_density_ratio") - 1) < 0.002);
   auto probes = test::read_csv(out / "probes.csv");
   auto& front = probes["surge_front"];
@@ -312,8 +318,10 @@ TEST_CASE("mps: 3D dam break front meets the criterion and stays in its tank thr
   auto summary = test::read_text(out / "summary.json");
   MESSAGE("interior density ", test::json_number(summary, "interior_density_ratio"), " rho0, n*/n0 ",
           test::json_number(summary, "interior_number_density_ratio"));
+  REQUIRE(test::json_number(summary, "interior_particles") > 0);  // else the ratio reads 1.0
   CHECK(std::abs(test::json_number(summary, "interior_density_ratio") - 1) < 0.02);
-  CHECK(test::json_number(summary, "max_relative_residual") <= 1e-8);
+  CHECK(test::json_number(summary, "solves") >= test::json_number(summary, "steps"));  // every step solved
+  CHECK(test::json_number(summary, "max_iterations") >= 1);
   auto front = test::front_of(test::read_csv(out / "probes.csv"), a, t_scale);
   auto fit = test::fit_time_origin(front);
   MESSAGE("3D, a/l0 = 10: unshifted front errors ", fit.unshifted, "| time-origin shift ", fit.shift,
