@@ -74,6 +74,7 @@ TEST_CASE("leapfrog: the hydrostatic tank settles to rho g depth within 1 percen
   REQUIRE(run_scene(opt) == kExitDone);
   auto probes = test::read_csv(out / "probes.csv");
   auto& time = probes["time"];
+  REQUIRE(time.back() == doctest::Approx(2.0));  // the scene's end: the window t >= 1.5 s is sampled
   for (std::size_t k = 0; k < time.size(); ++k) {
     if (time[k] < 1.5) continue;
     for (double depth : {0.10, 0.20, 0.30, 0.40, 0.45}) {
