@@ -11,7 +11,7 @@ PY_PACKAGES := python3-numpy python3-h5py python3-matplotlib python3-scipy
 PV_PACKAGES := paraview python3-paraview xvfb xauth ffmpeg
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps py-deps pv-deps render-deps build run test test-paraview test-sanitize bench plots tradeoffs docs fuzz fuzz-check clean
+.PHONY: all deps py-deps pv-deps render-deps build run test test-long test-paraview test-sanitize bench plots tradeoffs docs fuzz fuzz-check clean
 
 all: build
 
@@ -49,8 +49,12 @@ run: build py-deps
 	$(BUILD)/ryushi run scenes/dam_break_2d.toml --out out/dam_break_2d --overwrite
 	$(BUILD)/ryushi render out/dam_break_2d --frames last
 
+# The suite less the three 200-period sloshing tanks (label long), which test-long runs.
 test: build
-	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
+	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) -LE long
+
+test-long: build
+	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) -L long
 
 # Short WCSPH, MPS and 3D runs opened in ParaView's XDMF readers, and drawn by `ryushi render`
 # (tools/test_paraview.sh).
