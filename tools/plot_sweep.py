@@ -80,6 +80,8 @@ def main():
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(a.png, dpi=90)
+    # What the picture's axes are, for a terminal (and tools/test_paraview.sh).
+    print(f"{a.png}: x {ax.get_xlabel()}, y {ax.get_ylabel()}")
 
 
 if __name__ == "__main__":

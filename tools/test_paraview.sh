@@ -83,5 +83,11 @@ status=0; "$ryushi" render "$work/wcsph" --dest "$work/a_file/render" 2>"$work/d
 [ "$status" = 4 ] && grep -q "^ryushi render: could not write $work/a_file/render: " "$work/dest.err" &&
   [ "$(wc -l <"$work/dest.err")" = 1 ] ||
   { echo "test-paraview: render into an unwritable folder: exit $status, $(cat "$work/dest.err")" >&2; exit 1; }
+# sweep.png's labels say which axis is logarithmic (a decade or more) and which is not (it once
+# said "log axes" on linear ones).
+printf 'run,status,wall_time_s,x_error\na,completed,1.0,0.5\nb,completed,1.5,0.004\n' >"$work/sweep.csv"
+labels=$(/usr/bin/python3 tools/plot_sweep.py "$work/sweep.csv" "$work/sweep.png")
+[ "$labels" = "$work/sweep.png: x wall time (s), y x_error (log scale)" ] ||
+  { echo "test-paraview: sweep.png labels: $labels" >&2; exit 1; }
 echo "test-paraview: ryushi render wrote PNGs, a 3-frame MP4 and a 3D slice; refused an empty run, a movie" \
   "without ffmpeg and an unwritable folder"
