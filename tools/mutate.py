@@ -19,7 +19,6 @@ survivors, 2 on a mutation that no longer applies (its text is not in the file o
 import argparse
 import json
 import os
-import re
 import subprocess
 import sys
 import time
@@ -33,24 +32,23 @@ def run(cmd, cwd=None, timeout=None):
 
 
 def test_names_by_cost(build):
-    """Every ctest entry, cheapest first (unknown costs last)."""
-    listing = run(["ctest", "--show-only=json-v1"], cwd=build)
-    tests = [t["name"] for t in json.loads(listing.stdout)["tests"]]
+    """Every ctest entry, cheapest first: the slow tests by the COST tests/slow_tests.cmake gives
+    them (ctest's own CTestCostData.txt cuts names at their first space, so it cannot be read),
+    the rest, quick, before them."""
+    listing = json.loads(run(["ctest", "--show-only=json-v1"], cwd=build).stdout)
     costs = {}
-    for path in (os.path.join(build, "Testing", "Temporary", "CTestCostData.txt"),
-                 os.path.join(ROOT, "build", "Testing", "Temporary", "CTestCostData.txt")):
-        if not os.path.exists(path):
-            continue
-        for line in open(path):
-            if line.startswith("---"):
-                break
-            parts = line.rsplit(" ", 2)
-            if len(parts) == 3:
-                try:
-                    costs.setdefault(parts[0], float(parts[2]))
-                except ValueError:
-                    pass
-    return sorted(tests, key=lambda t: costs.get(t, 1e9))
+    for t in listing["tests"]:
+        cost = 1.0
+        for prop in t.get("properties", []):
+            if prop.get("name") == "COST":
+                cost = float(prop["value"])
+        costs[t["name"]] = cost
+    return sorted(costs, key=lambda name: costs[name])
+
+
+def cmake_regex(name):
+    """An exact-match ctest -R pattern (CMake's regex syntax: no escaped spaces)."""
+    return "^" + "".join("\\" + c if c in ".^$*+?()[]{}|\\" else c for c in name) + "$"
 
 
 def main():
@@ -108,8 +106,10 @@ def main():
             for name in tests:
                 ran += 1
                 try:
-                    t = run(["ctest", "-R", "^" + re.escape(name) + "$", "--timeout", str(a.per_test_timeout)],
+                    t = run(["ctest", "-R", cmake_regex(name), "--timeout", str(a.per_test_timeout)],
                             cwd=build, timeout=a.per_test_timeout + 60)
+                    if "No tests were found" in t.stdout + t.stderr:
+                        sys.exit(f"mutate: ctest found no test for the pattern {cmake_regex(name)}")
                     failed = t.returncode != 0
                 except subprocess.TimeoutExpired:
                     failed = True
