@@ -205,13 +205,28 @@ TEST_CASE(
 // minimum within 20 periods (19.7 J/m sample by sample over 200 periods) and 5 J/m of kinetic
 // energy stays in the water: something (the projection on a surface that the shifting keeps
 // rearranging, on a support of a few particles) feeds the motion faster than it is damped.
-// Marked should_fail: it turns red when fixed.
+// Measured 2026-11-29 (20 periods): the period mean rises 5.32 J/m, 11.2 J/m sample by sample, E
+// at most 1.08 J/m above E(0), 4.6 J/m of kinetic energy at the end. Asserted (test audit round
+// three, issue 50, row 3; until then should_fail, which any failed assertion passed): the known
+// growth's signature, the run completes and its period mean rises more than 10% of A (3.07 J/m:
+// twice the bound of 5% of A, 58% of the measured rise). A run within the bound is checked as
+// the passing cases are and fails with a message: the growth may be fixed, and the case is then
+// to assert check_no_growth_beside_noise.
 TEST_CASE(
     "stability: an ISPH sloshing tank (violent-flow set-up) at H/d = 10 does not grow (known to fail "
-    "within 20 periods)" *
-    doctest::should_fail()) {
-  check_no_growth_beside_noise(
-      measure("isph, d = 0.05 m", run_tank("isph_coarse", 20, 0.05, kIsphViolentFlowSetUp), 20));
+    "within 20 periods)") {
+  const Growth g = measure("isph, d = 0.05 m", run_tank("isph_coarse", 20, 0.05, kIsphViolentFlowSetUp), 20);
+  if (g.period_mean_rise <= 0.05 * kStair) {
+    check_no_growth_beside_noise(g);
+    FAIL_CHECK(
+        "ISPH's violent-flow set-up at H/d = 10 no longer grows within 20 periods: the known growth may be "
+        "fixed; make this case assert check_no_growth_beside_noise");
+    return;
+  }
+  CHECK_MESSAGE(g.period_mean_rise > 0.1 * kStair,
+                "the period mean rises "
+                    << g.period_mean_rise
+                    << " J/m, above the bound but below the known growth: it has changed");
 }
 
 // One resolution up (H/d = 20) the growth within 20 periods is gone, but over 200 periods the
