@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "h5_read.hpp"
 #include "scene_error.hpp"
@@ -94,7 +95,7 @@ TEST_CASE(
     "heat: conduction between plates at fixed temperatures follows the series at two times, two "
     "resolutions") {
   // L / d = 20 and 40; frames 1 and 4 are t = 0.05 and 0.2 L^2 / alpha (34.9 s, 139.6 s).
-  double previous = 1e9;
+  std::vector<double> early_errors, late_errors;
   for (int cells : {20, 40}) {
     auto dir = test::unique_scratch("conduction");
     auto r = test::run_command(bin() + " run " + test::scene_path("conduction_2d.toml") + " --quiet --out " +
@@ -106,9 +107,19 @@ TEST_CASE(
             " K at 0.2 L^2/alpha (range 20 K)");
     CHECK(early < 0.01 * (kT1 - kT2));
     CHECK(late < 0.01 * (kT1 - kT2));
-    CHECK(early < previous);  // converges
-    previous = early;
+    early_errors.push_back(early), late_errors.push_back(late);
   }
+  // Converges by a fixed factor per halving, not by any decrease (test audit round three, issue 50,
+  // row 39). Measured: the largest error falls 0.0587 -> 0.0347 K at 0.05 L^2/alpha and 6.54e-4 ->
+  // 3.85e-4 K at 0.2 L^2/alpha, a factor 1.69 at both (order 0.76, below first order's 2; this
+  // largest error over the fluid, with the plates 10 K off the water at t = 0, is not analysed
+  // further here). Asserted: at least 1.5 per halving at both times (order 0.58), 11% under the
+  // measured factor: an error that stalls (1.0) or creeps down fails.
+  const double early_ratio = early_errors[0] / early_errors[1], late_ratio = late_errors[0] / late_errors[1];
+  MESSAGE("error ratio L/d = 20 over 40: ", early_ratio, " at 0.05 L^2/alpha, ", late_ratio,
+          " at 0.2 L^2/alpha");
+  CHECK(early_ratio >= 1.5);
+  CHECK(late_ratio >= 1.5);
 }
 
 TEST_CASE(

@@ -8,7 +8,7 @@
 // computed here. Asserted at l/d = 10, 16 and 20 (the paper's 16 and 20; its 50 is in docs/isph.md):
 // the profile across the channel's middle within 1% (L2, relative to the centreline speed) of
 // the series at t = 0.05 and 0.1 s (the start-up) and at 0.5 s (the paper's time, 0.7% short of
-// steady), and the error falling with resolution at each time.
+// steady), and the error falling with resolution at each time at order 1.5 or better.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -115,9 +115,17 @@ TEST_CASE("isph poiseuille: the Eulerian channel follows the Morris start-up and
             100 * e[1], "%, ", 100 * e[2], "%");
     errors.push_back(e);
   }
+  // Converges at an order, not by any decrease (test audit round three, issue 50, row 39). The
+  // corrected operators are second order on a lattice. Measured error ratios, l/d = 10 over 16 and
+  // 16 over 20: 3.95 and 1.68 at 0.05 s, 3.51 and 1.92 at 0.1 s, 2.97 and 1.73 at 0.5 s (order
+  // 2.3-2.9). Asserted: at least order 1.5 (a factor 2.8 per halving), i.e. (16/10)^1.5 = 2.02
+  // and (20/16)^1.5 = 1.40; the closest, 1.68 against 1.40, is the finest step at 0.05 s.
   for (int k = 0; k < 3; ++k) {
-    CHECK(errors[1][k] < errors[0][k]);
-    CHECK(errors[2][k] < errors[1][k]);
+    const double first = errors[0][k] / errors[1][k], second = errors[1][k] / errors[2][k];
+    MESSAGE("t = ", kTimes[k], " s: error ratio l/d = 10 over 16 ", first, ", 16 over 20 ", second,
+            " (first order: 1.6, 1.25)");
+    CHECK(first >= std::pow(16.0 / 10, 1.5));
+    CHECK(second >= std::pow(20.0 / 16, 1.5));
   }
 }
 
@@ -220,9 +228,15 @@ TEST_CASE("isph poiseuille: the Eulerian 3D pipe follows the Bessel start-up and
   // The start-up converges with resolution; at 0.5 s the flow is steady (the series is 1e-5
   // from the parabola) and the corrected Laplacian holds a quadratic profile exactly, so the
   // error there is the time stepping's, not the spacing's: asserted below 1e-4 at each.
+  // The start-up converges at an order, as the channel's (above). Measured error ratios, l/d = 10
+  // over 16 and 16 over 20: 5.57 and 1.82 at 0.05 s, 5.41 and 2.15 at 0.1 s (order 2.7-3.7).
+  // Asserted: at least order 1.5, (16/10)^1.5 = 2.02 and (20/16)^1.5 = 1.40.
   for (int k = 0; k < 2; ++k) {
-    CHECK(errors[1][k] < errors[0][k]);
-    CHECK(errors[2][k] < errors[1][k]);
+    const double first = errors[0][k] / errors[1][k], second = errors[1][k] / errors[2][k];
+    MESSAGE("pipe t = ", kTimes[k], " s: error ratio l/d = 10 over 16 ", first, ", 16 over 20 ", second,
+            " (first order: 1.6, 1.25)");
+    CHECK(first >= std::pow(16.0 / 10, 1.5));
+    CHECK(second >= std::pow(20.0 / 16, 1.5));
   }
   for (auto& e : errors) CHECK(e[2] < 1e-4);
 }
