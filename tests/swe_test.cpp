@@ -3,6 +3,7 @@
 // raster-terrain scenes, bad rasters and scene keys.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "app/exit_codes.hpp"
@@ -29,6 +30,15 @@ Outcome run(const std::string& scene, const std::string& name, std::vector<std::
   opt.sets = std::move(sets);
   int code = run_scene(opt);
   return {code, test::read_text(fs::path(opt.out_dir) / "summary.json"), opt.out_dir};
+}
+
+// scenes/terrain/valley.asc's no-data cells: 3.0 <= x <= 3.3, 1.5 <= y <= 1.8. Inside: more than
+// `margin` from its edges (1e-9: a lattice point on an edge may fall in either cell).
+bool in_no_data_box(double x, double y, double margin = 1e-9) {
+  return x > 3.0 + margin && x < 3.3 - margin && y > 1.5 + margin && y < 1.8 - margin;
+}
+double distance_to_no_data_box(double x, double y) {
+  return std::hypot(std::max({3.0 - x, 0.0, x - 3.3}), std::max({1.5 - y, 0.0, y - 1.8}));
 }
 
 struct Ritter {
@@ -120,15 +130,54 @@ TEST_CASE("swe: the run-up on a 10% slope runs to 1.6 s with splitting, its fron
   CHECK(std::abs(test::json_number(r.summary, "fluid_volume_relative_change")) < 1e-12);
 }
 
-TEST_CASE("swe: a flood on raster terrain with no-data cells completes with its volume kept") {
-  auto r = run("valley_flood_swe.toml", "valley", {"time.end=1.0"});
+TEST_CASE(
+    "swe: a flood on raster terrain completes with its volume kept and no particle on its no-data cells") {
+  auto r = run("valley_flood_swe.toml", "valley");  // to the scene's 2 s: the front reaches x = 4 m
   REQUIRE(r.code == kExitDone);
   CHECK(test::json_number(r.summary, "splits") > 0);
   CHECK(std::abs(test::json_number(r.summary, "fluid_volume_relative_change")) < 1e-12);
-  // No particle starts on the no-data cells (3.0 <= x <= 3.3, 1.5 <= y <= 1.8): beyond the
-  // reservoir anyway; the bed there reads the raster's highest value.
-  auto bed = test::read_dataset(r.out / "frames" / "frame_00000.h5", "bed_elevation").values;
-  REQUIRE(!bed.empty());
+  // The no-data cells (3.0 <= x <= 3.3, 1.5 <= y <= 1.8) are dry high ground: the bed there reads
+  // the raster's highest value, 0.35 m, and water runs up against them as against a bank. The bed
+  // is bilinear between cell centres, so it climbs to 0.35 m over the half cell (0.05 m) inside
+  // the box's edge and is 0.35 m, above the reservoir's 0.25 m surface, within the centres'
+  // square. No particle reaches that square in any frame (audit round three, row 42). Measured:
+  // the water comes to the box at t = 1.8 s (before, 0.47 m from it at 1 s, the test's old end),
+  // 2 particles 0.044 m up the bank then, none inside at 1.9 and 2 s.
+  int frames = 0, on_bank = 0;
+  double nearest = 1e9;  // the water's closest approach to the no-data box
+  for (; fs::exists(test::frame_path(r.out, frames)); ++frames) {
+    const auto x = test::read_dataset(test::frame_path(r.out, frames), "position").values;
+    REQUIRE(!x.empty());
+    std::size_t on_top = 0;
+    for (std::size_t i = 0; i < x.size(); i += 3) {
+      on_top += in_no_data_box(x[i], x[i + 1], 0.05);
+      on_bank += in_no_data_box(x[i], x[i + 1]);
+      nearest = std::min(nearest, distance_to_no_data_box(x[i], x[i + 1]));
+    }
+    CHECK_MESSAGE(on_top == 0, on_top << " particles on the no-data cells' top in frame " << frames);
+  }
+  MESSAGE("valley flood: " << frames
+                           << " frames to t = 2 s, the water's closest approach to the no-data cells "
+                           << nearest << " m, " << on_bank << " particle-frames up their bank");
+  REQUIRE(frames == 21);  // 0 to 2 s every 0.1 s
+  CHECK(nearest < 0.05);  // the water did reach them (0 m measured)
+  // No particle starts on them, with the reservoir over them: the block stretched over the whole
+  // valley with its surface at 0.5 m, above the cells' 0.35 m bed, so only the no-data rule keeps
+  // them dry. The particles around them show that the block covered them.
+  auto covered = run("valley_flood_swe.toml", "valley_covered",
+                     {"fluid.0.max=[4.0, 2.0]", "fluid.0.surface_elevation=0.5", "time.max_steps=1"});
+  REQUIRE(covered.code == kExitDone);
+  const auto x = test::read_dataset(test::frame_path(covered.out, 0), "position").values;
+  std::size_t inside = 0, around = 0;
+  for (std::size_t i = 0; i < x.size(); i += 3) {
+    inside += in_no_data_box(x[i], x[i + 1]);
+    const double d = distance_to_no_data_box(x[i], x[i + 1]);
+    around += d > 0 && d < 0.06;
+  }
+  MESSAGE("reservoir over the no-data cells: " << x.size() / 3 << " particles, " << inside
+                                               << " on the cells, " << around << " within 0.06 m of them");
+  CHECK(inside == 0);
+  CHECK(around == 28);  // the whole ring of lattice points 0.05 m outside them: the block covered them
 }
 
 TEST_CASE("swe: bad rasters and scene keys are exit code 2 with the file and line") {
