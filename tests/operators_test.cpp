@@ -168,10 +168,13 @@ TEST_CASE("patch test 2D: SPH(2) and corrected operators converge, the standard 
     MESSAGE(op, " disorder ", disorder, ": order_interior=", r.order_interior, " order_boundary=", r.order_boundary);
     return r;
   };
+  // 20% disorder costs SPH(2) some order: measured 1.71 (Laplacian) and 1.57 (mixed) against
+  // 1.97 and 2.00 on the lattice (docs/operators.md). 1.3 is below both and above first order,
+  // which a lost correction term would leave (test audit round three, issue 50, row 30).
   CHECK(order("laplacian-sph2", 0.0).order_interior >= 1.8);
-  CHECK(order("laplacian-sph2", 0.2).order_interior >= 0.8);
+  CHECK(order("laplacian-sph2", 0.2).order_interior >= 1.3);
   CHECK(order("mixed-sph2", 0.0).order_interior >= 1.8);
-  CHECK(order("mixed-sph2", 0.2).order_interior >= 0.8);
+  CHECK(order("mixed-sph2", 0.2).order_interior >= 1.3);
   CHECK(order("gradient-corrected", 0.0).order_interior >= 1.8);
   CHECK(order("laplacian-corrected", 0.0).order_interior >= 1.8);
   // Standard Laplacian. With disorder its error grows as d shrinks (at 1/160 it is above its
@@ -195,11 +198,15 @@ TEST_CASE("patch test 3D: the same orders with the 3D Franke analogue at 1/20 ..
     MESSAGE(op, " 3D disorder ", disorder, ": order_interior=", r);
     return r;
   };
+  // Measured: SPH(2) Laplacian 2.00 regular and 1.99 disordered, mixed 1.92 and 1.85, corrected
+  // gradient 1.94, corrected Laplacian 2.00 (issue 50, audit rows 30 and 40: docs/operators.md
+  // says the corrected Laplacian's >= 1.8 is asserted in 3D too).
   CHECK(order("laplacian-sph2", 0.0) >= 1.8);
-  CHECK(order("laplacian-sph2", 0.2) >= 0.8);
+  CHECK(order("laplacian-sph2", 0.2) >= 1.3);
   CHECK(order("mixed-sph2", 0.0) >= 1.8);
-  CHECK(order("mixed-sph2", 0.2) >= 0.8);
+  CHECK(order("mixed-sph2", 0.2) >= 1.3);
   CHECK(order("gradient-corrected", 0.0) >= 1.8);
+  CHECK(order("laplacian-corrected", 0.0) >= 1.8);
 }
 
 TEST_CASE("patch test: an unknown operator is refused and the order fit is exact on a clean power law") {
