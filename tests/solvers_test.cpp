@@ -2,6 +2,7 @@
 // direct solvers, and every way a solve can fail reported as a status.
 #include <doctest/doctest.h>
 #include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
@@ -156,11 +157,19 @@ TEST_CASE("solvers: failures come back as statuses with reasons") {
 
 TEST_CASE("solvers: reductions are bit-identical for any thread count") {
   auto a = random_vector(1'000'003, 4), b = random_vector(1'000'003, 5);
+  // global_control only caps the threads: the default arena has as many slots as the machine has
+  // CPUs, so on one CPU every count ran on one thread. An arena of n slots (and a cap of n) runs n
+  // threads, oversubscribing the machine if need be (issue 50, audit row 35). Measured under
+  // `taskset -c 0`: a parallel_for at a cap of 7 met 1 thread in the default arena, 7 in this one.
   auto with_threads = [&](int n) {
     tbb::global_control g(tbb::global_control::max_allowed_parallelism, n);
-    return dot<double>(a, b);
+    tbb::task_arena arena(n);
+    return arena.execute([&] {
+      CHECK(tbb::this_task_arena::max_concurrency() == n);
+      return dot<double>(a, b);
+    });
   };
   const double one = with_threads(1);
-  for (int n : {2, 3, 7})  // 7: oversubscribed on this 2-core machine
+  for (int n : {2, 3, 7})  // 7: oversubscribed on a 2-core machine
     CHECK_MESSAGE(with_threads(n) == one, n << " threads");
 }
