@@ -4,7 +4,6 @@
 // metrics); docs/output.md lists its keys.
 #include <sys/resource.h>
 
-#include "app/memory_estimate.hpp"
 #include "app/runner.hpp"
 
 namespace ryushi {
@@ -50,7 +49,7 @@ void Runner<D>::write_summary(const std::string& status, const std::string& mess
   // The memory guard's estimate made before the run allocated (app/memory_estimate.hpp) beside
   // the process's peak resident set so far: how far the estimate is off for this scene.
   w.key("memory").begin_object();
-  w.key("estimated_bytes").value(estimate_memory(scene_).bytes);
+  w.key("estimated_bytes").value(estimated_bytes_);
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   w.key("peak_resident_bytes").value(1024.0 * usage.ru_maxrss);

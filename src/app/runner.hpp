@@ -21,6 +21,7 @@
 #include "app/exit_codes.hpp"
 #include "app/health_check.hpp"
 #include "app/health_monitor.hpp"
+#include "app/memory_estimate.hpp"
 #include "app/progress.hpp"
 #include "app/run.hpp"
 #include "app/run_files.hpp"
@@ -413,6 +414,7 @@ class Runner {
   std::vector<std::string> frame_fields_;  // [output] fields and what the method adds (temperature, ...)
   bool density_may_vanish_ = false;
   HealthMonitor<D> health_;
+  const double estimated_bytes_ = estimate_memory(scene_).bytes;  // the guard's, for summary.json
   std::vector<double> restored_monitor_;      // the checkpoint's health monitor state
   std::set<std::string> health_warned_;       // the checks that warned (action = "warn")
   std::vector<std::string> health_warnings_;  // their messages, for summary.json
