@@ -2,8 +2,15 @@
 // The dam-break criterion decided in the ISPH issue, for every method: the surge front Z = x/a
 // against Martin & Moyce (1952, n^2 = 2; tools/reference/martin_moyce_1952_n2_2.csv) after ONE
 // fitted time-origin shift dT in [0, 0.30] (the experiment's gate needs time to open; published
-// SPH, MPS, BEM and level-set fronts lead it the same way), within 3% for T <= 2.5; and
+// SPH, MPS, BEM and level-set fronts lead it the same way), within 3% at the four data points
+// T <= 2.547; the unshifted lead at most 20% (the same 0.30 at the data's front speed); and
 // convergence: the fronts at a/d = 20 and 40 agree within 3% over T <= 2.5.
+// Why 0.30 is a bound and not a fit to these runs (tests/README.md, audit row 7): the fitted
+// shift converges with resolution below it, measured to a/d = 100 (ISPH 0.260 / 0.286 / 0.289 /
+// 0.293 at a/d = 20 / 40 / 80 / 100, docs/validation.md): 0.30 is the experiment's delay
+// (16 ms at a = 2.25 in) with the finest run's distance to it as the margin. A shift is
+// the gate's, so it may not grow without bound; a run that needs more leads the data by
+// more than the release can explain.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -58,14 +65,16 @@ inline Front front_of(const Csv& probes, double a, double t_scale) {
 
 struct FrontFit {
   double shift = 0, error = 0;  // the fitted dT and the largest relative error after it
+  double unshifted_lead = 0;    // the largest relative error without a shift
   std::string unshifted;        // the errors without a shift, for the message
 };
 
-// The fit needs at least `min_points` reference points with T <= T_max (three for the default
-// table: 0.832, 1.219, 1.997): with none, the error would be 0 and every criterion pass.
-inline FrontFit fit_time_origin(const Front& f, double T_max = 2.5,
+// The fit needs at least `min_points` reference points with T <= T_max (four for the default
+// table: 0.832, 1.219, 1.997, 2.547; the runs end at T = 2.6 or later): with none, the error
+// would be 0 and every criterion pass.
+inline FrontFit fit_time_origin(const Front& f, double T_max = 2.6,
                                 const std::vector<FrontPoint>& data = martin_moyce(),
-                                std::size_t min_points = 3) {
+                                std::size_t min_points = 4) {
   const auto used =
       std::count_if(data.begin(), data.end(), [&](const FrontPoint& p) { return p.T <= T_max; });
   REQUIRE_MESSAGE(std::size_t(used) >= min_points, used << " reference points with T <= " << T_max);
@@ -75,22 +84,23 @@ inline FrontFit fit_time_origin(const Front& f, double T_max = 2.5,
       if (p.T <= T_max) worst = std::max(worst, std::abs(interpolate(f.T, f.Z, p.T - shift) / p.Z - 1));
     return worst;
   };
-  FrontFit fit{0, max_error(0), ""};
+  FrontFit fit{0, max_error(0), max_error(0), ""};
   for (int k = 1; k <= 300; ++k)  // dT in [0, 0.30] in steps of 0.001
-    if (double e = max_error(0.001 * k); e < fit.error) fit = {0.001 * k, e, ""};
+    if (double e = max_error(0.001 * k); e < fit.error) fit = {0.001 * k, e, fit.unshifted_lead, ""};
   for (auto& p : data)
     if (p.T <= T_max) fit.unshifted += std::to_string(100 * (interpolate(f.T, f.Z, p.T) / p.Z - 1)) + "% ";
   return fit;
 }
 
-// The 3% after one fitted shift, at a/d = 20 (coarse) and 40 (fine), with the unshifted errors
-// and the fit printed beside it.
+// The 3% after one fitted shift and the unshifted lead of at most 20%, at a/d = 20 (coarse) and
+// 40 (fine), with the unshifted errors and the fit printed beside it.
 inline void check_time_origin_criterion(const Front& coarse, const Front& fine) {
   for (auto* f : {&coarse, &fine}) {
     auto fit = fit_time_origin(*f);
     MESSAGE((f == &coarse ? "a/d = 20" : "a/d = 40"), ": unshifted front errors ", fit.unshifted,
             "| time-origin shift ", fit.shift, " -> max error ", 100 * fit.error, "%");
     CHECK(fit.error <= 0.03);
+    CHECK(fit.unshifted_lead <= 0.20);
   }
 }
 

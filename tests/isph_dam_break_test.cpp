@@ -165,6 +165,7 @@ TEST_CASE("isph: 3D dam break runs through the impact, meets the front criterion
   MESSAGE("ISPH 3D, a/d = 10: unshifted front errors ", fit.unshifted, "| time-origin shift ", fit.shift,
           " -> max error ", 100 * fit.error, "%");
   CHECK(fit.error <= 0.03);
+  CHECK(fit.unshifted_lead <= 0.20);
   CHECK(front.Z.back() >= 3.9);
   auto inside = test::fluid_containment(test::last_frame(out), {0, 0, 0}, {1.0, 0.25, 0}, d / 2);
   CHECK(inside.fluid == 2000);

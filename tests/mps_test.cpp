@@ -46,8 +46,12 @@ RunOptions dam_break(const fs::path& out, double spacing, double end) {
 // to step: 3-7% standard deviation at these probes), the probe pressures at four heights must
 // lie on the hydrostatic line p = rho g (eta - y): the fitted slope within 1% of rho g, the fitted
 // surface eta within half a spacing of where the water started (mass cannot go anywhere else),
-// and no probe more than 1% of rho g H off the line. Measured at H / l0 = 20: slope 0.9919 rho g,
-// eta = 0.5 m - 0.19 l0, largest residual 6.6 Pa (0.13% of rho g H).
+// and no probe more than 1% of rho g H off the line; and each probe within 3% of rho g depth
+// (5% at the shallowest, 4 l0 deep, whose half-window means differ by 4%: -4.2% over t in [1, 1.5],
+// -0.2% over [1.5, 2]; the deeper three differ by at most 0.3% between the halves). Measured at
+// H / l0 = 20 (2026-11-29): per probe -2.2%, -2.1%, -1.5%, -1.1% at depths 0.1-0.4 m. At the scene's
+// own H / l0 = 40 the deficits are -3.9%, -3.1%, -2.4%, -2.1%, steady between the halves:
+// tests/README.md, audit row 8 (an MPS bias that grows with resolution, tracked there).
 TEST_CASE("mps: hydrostatic tank, mean pressure follows rho g depth") {
   auto out = test::scratch("mps_hydrostatic");
   RunOptions opt;
@@ -80,6 +84,11 @@ TEST_CASE("mps: hydrostatic tank, mean pressure follows rho g depth") {
   CHECK(std::abs(slope / rho_g - 1) < 0.01);
   CHECK(std::abs(eta - H) < 0.5 * l0);
   for (std::size_t k = 0; k < y.size(); ++k) CHECK(std::abs(p[k] - slope * (eta - y[k])) < 0.01 * rho_g * H);
+  for (std::size_t k = 0; k < y.size(); ++k) {
+    const double depth = H - y[k], deficit = p[k] / (rho_g * depth) - 1;
+    MESSAGE("depth ", depth, " m: p / (rho g depth) - 1 = ", 100 * deficit, "%");
+    CHECK(std::abs(deficit) <= (depth < 0.15 ? 0.05 : 0.03));
+  }
   auto summary = test::read_text(out / "summary.json");
   // Mass is exact by construction; incompressibility shows in the interior's density, the one the
   // Poisson source holds (the smooth kernel's; docs/mps.md): 0.2% is about ten times the largest
@@ -327,6 +336,7 @@ TEST_CASE("mps: 3D dam break front meets the criterion and stays in its tank thr
   MESSAGE("3D, a/l0 = 10: unshifted front errors ", fit.unshifted, "| time-origin shift ", fit.shift,
           " -> max error ", 100 * fit.error, "%");
   CHECK(fit.error <= 0.03);
+  CHECK(fit.unshifted_lead <= 0.20);
   CHECK(front.Z.back() >= 3.9);  // the far wall is at Z = 4
   auto inside = test::fluid_containment(test::last_frame(out), {0, 0, 0}, {1.0, 0.25, 0}, l0 / 2);
   CHECK(inside.fluid == 2000);

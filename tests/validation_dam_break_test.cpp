@@ -82,6 +82,7 @@ TEST_CASE("validation: WCSPH dam break with Fickian shifting keeps the front and
   MESSAGE("with shifting, a/d = 20: unshifted front errors ", fit.unshifted, "| time-origin shift ", fit.shift,
           " -> max error ", 100 * fit.error, "%");
   CHECK(fit.error <= 0.03);
+  CHECK(fit.unshifted_lead <= 0.20);
   auto frame = test::last_frame(out);
   auto kind = test::read_dataset(frame, "kind").values, x = test::read_dataset(frame, "position").values;
   double closest = 1e9;
@@ -122,6 +123,7 @@ TEST_CASE("validation: 3D dam break front meets the criterion, follows the 2D fr
   MESSAGE("3D, a/d = 10: unshifted front errors ", fit.unshifted, "| time-origin shift ", fit.shift,
           " -> max error ", 100 * fit.error, "%");
   CHECK(fit.error <= 0.03);
+  CHECK(fit.unshifted_lead <= 0.20);
 
   auto out2 = test::scratch("dam_break_3d_as_2d");
   RunOptions two = opt;
