@@ -159,4 +159,15 @@ TEST_CASE("health: a resumed run keeps the original start's energy and pressure 
   // lowest particle differs from the start's by far more than round-off.
   CHECK(test::json_number(after, "energy_scale") == test::json_number(before, "energy_scale"));
   CHECK(test::json_number(after, "pressure_scale") == test::json_number(before, "pressure_scale"));
+  // The run's extremes travel in the checkpoint too: the resumed run reports those of a run that
+  // was never stopped (a resume is bit-identical), not those of its own part after 0.2 s.
+  auto whole_dir = test::unique_scratch("health_resume_whole");
+  auto whole =
+      test::run_command(bin + " run " + test::scene_path("dam_break_2d.toml") +
+                        " --quiet --set particles.spacing=0.0125 --end-time 0.3 --out " + whole_dir.string());
+  REQUIRE_MESSAGE(whole.code == kExitDone, whole.output);
+  const auto unstopped = test::read_text(whole_dir / "summary.json");
+  for (const char* key : {"run_max_density_deviation", "run_max_density_deviation_time",
+                          "run_max_fluid_volume_change", "run_max_fluid_volume_change_time"})
+    CHECK_MESSAGE(test::json_number(after, key) == test::json_number(unstopped, key), key);
 }

@@ -180,6 +180,11 @@ TEST_CASE("mps: dam break runs past the far-wall impact and keeps its density") 
           test::json_number(summary, "interior_number_density_ratio"));
   REQUIRE(test::json_number(summary, "interior_particles") > 0);  // else the ratio reads 1.0
   CHECK(std::abs(test::json_number(summary, "interior_density_ratio") - 1) < 0.002);
+  // And at every frame of the run, the impact's included (audit row 43: not the last state alone).
+  const auto [least, largest] = test::json_range(summary, "interior_density_ratio");
+  MESSAGE("interior density over the frames ", least, " .. ", largest, " rho0");
+  CHECK(1 - least < 0.002);
+  CHECK(largest - 1 < 0.002);
   auto probes = test::read_csv(out / "probes.csv");
   auto& front = probes["surge_front"];
   CHECK(front.front() / a == doctest::Approx(1.0));

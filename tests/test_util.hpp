@@ -128,6 +128,18 @@ inline double json_number(const std::string& json, const std::string& key) {
   return value;
 }
 
+// A [least, largest] pair of summary.json's diagnostics_range.
+inline std::pair<double, double> json_range(const std::string& json, const std::string& key) {
+  auto at = json.find("\"diagnostics_range\"");
+  REQUIRE_MESSAGE(at != std::string::npos, "no diagnostics_range in the JSON");
+  at = json.find("\"" + key + "\": [", at);
+  REQUIRE_MESSAGE(at != std::string::npos, "no range '" << key << "' in diagnostics_range");
+  char* end = nullptr;
+  const double least = std::strtod(json.c_str() + json.find('[', at) + 1, &end);
+  const double largest = std::strtod(end + 1, nullptr);  // past the comma
+  return {least, largest};
+}
+
 // Runs a shell command; returns its exit status and captures stderr+stdout.
 struct CommandResult {
   int code;

@@ -160,7 +160,9 @@ class HealthMonitor {
     for (std::size_t i = 0; i < w.size(); ++i)
       if (kind[i] == kFluid) potential += m[i] * g * (-down.dot(x[i]) - lowest);
     energy_scale_ = kinetic + potential;
-    energy0_ = pass(w).energy;
+    const Pass start = pass(w);
+    energy0_ = start.energy, volume0_ = start.volume;
+    extremes_ = RunExtremes{};
     // The longest way across the fluid at the start, for the density check's wait L / c0.
     Vec<D> lo = Vec<D>::Constant(1e300), hi = Vec<D>::Constant(-1e300);
     for (std::size_t i = 0; i < w.size(); ++i)
@@ -173,6 +175,11 @@ class HealthMonitor {
   // that order), or none.
   std::optional<HealthFinding> check(const World<D>& w, double time) {
     const Pass r = pass(w);
+    if (r.deviation > extremes_.density_deviation)
+      extremes_.density_deviation = r.deviation, extremes_.density_time = time;
+    const double dv = volume0_ > 0 ? r.volume / volume0_ - 1 : 0.0;
+    if (std::abs(dv) > std::abs(extremes_.volume_change))
+      extremes_.volume_change = dv, extremes_.volume_time = time;
     auto& ids = w.column(components::id);
     auto where = [&](std::size_t i) {
       std::ostringstream s;
@@ -233,20 +240,39 @@ class HealthMonitor {
 
   // The state a checkpoint carries, so that a resumed run keeps the original start's energy and
   // scales and the density check's timer (what prepare() would take from the resumed state).
+  // And the run's extremes so far (from 2026-11-29; a checkpoint of the five-value layout before
+  // that resumes with the extremes from the resumed state on).
   std::vector<double> state() const {
-    return {energy0_, energy_scale_, pressure_scale_, compressed_since_, check_energy_ ? 1.0 : 0.0};
+    return {energy0_,
+            energy_scale_,
+            pressure_scale_,
+            compressed_since_,
+            check_energy_ ? 1.0 : 0.0,
+            volume0_,
+            extremes_.density_deviation,
+            extremes_.density_time,
+            extremes_.volume_change,
+            extremes_.volume_time};
   }
   void restore(const std::vector<double>& s) {
-    if (s.size() != 5) return;  // another version's layout: keep the resumed state's
+    if (s.size() != 5 && s.size() != 10) return;  // another version's layout: keep the resumed state's
     energy0_ = s[0], energy_scale_ = s[1], pressure_scale_ = s[2], compressed_since_ = s[3];
     check_energy_ = check_energy_ && s[4] != 0;
+    if (s.size() == 10) volume0_ = s[5], extremes_ = RunExtremes{s[6], s[7], s[8], s[9]};
   }
+  // The largest |rho / rho0 - 1| of a fluid particle and the largest change of the fluid volume
+  // sum m / rho (signed, relative to the start) after any step of the run, with their times:
+  // what a check of the last frame alone would miss (an impact's peak).
+  struct RunExtremes {
+    double density_deviation = 0, density_time = 0, volume_change = 0, volume_time = 0;
+  };
+  const RunExtremes& extremes() const { return extremes_; }
   double pressure_scale() const { return pressure_scale_; }
   double energy_scale() const { return check_energy_ ? energy_scale_ : 0.0; }
 
  private:
   struct Pass {
-    double deviation = 0, pressure = 0, energy = 0, speed2 = 0;
+    double deviation = 0, pressure = 0, energy = 0, speed2 = 0, volume = 0;
     std::size_t fluid = 0, beyond = 0;  // fluid particles, and those beyond the density bound
     std::size_t deviation_at = kNone, pressure_at = kNone, inside_wall = kNone, fastest = kNone;
   };
@@ -266,11 +292,11 @@ class HealthMonitor {
           for (std::size_t i = range.begin(); i != range.end(); ++i) {
             if (kind[i] != kFluid) continue;
             ++r.fluid;
-            if (density) {
-              const double e = std::abs(rho[i] * inv_rho0 - 1);
-              if (e > r.deviation) r.deviation = e, r.deviation_at = i;
-              if (e > spec_.density_deviation) ++r.beyond;
-            }
+            // The deviation and the volume for every method: the run's extremes (summary.json).
+            const double e = std::abs(rho[i] * inv_rho0 - 1);
+            if (e > r.deviation) r.deviation = e, r.deviation_at = i;
+            if (density && e > spec_.density_deviation) ++r.beyond;
+            if (rho[i] > 0) r.volume += m[i] / rho[i];
             const double a = std::abs(p[i]);
             if (a > r.pressure) r.pressure = a, r.pressure_at = i;
             const double v2 = v[i].squaredNorm();
@@ -285,7 +311,7 @@ class HealthMonitor {
           if (b.pressure > a.pressure) a.pressure = b.pressure, a.pressure_at = b.pressure_at;
           a.fluid += b.fluid, a.beyond += b.beyond;
           if (b.speed2 > a.speed2) a.speed2 = b.speed2, a.fastest = b.fastest;
-          a.energy += b.energy;
+          a.energy += b.energy, a.volume += b.volume;
           a.inside_wall = std::min(a.inside_wall, b.inside_wall);
           return a;
         });
@@ -293,6 +319,8 @@ class HealthMonitor {
 
   HealthSpec spec_;
   double rho0_ = 1000, pressure_scale_ = 0, energy_scale_ = 0, energy0_ = 0;
+  double volume0_ = 0;  // the fluid volume sum m / rho at the start
+  RunExtremes extremes_;
   double crossing_ = 0;           // L / c0, the density check's wait
   double compressed_since_ = -1;  // when the fluid's bulk last went beyond the density bound (-1: it is not)
   Vec<D> gravity_ = Vec<D>::Zero();

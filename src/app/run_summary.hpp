@@ -77,8 +77,32 @@ void Runner<D>::write_summary(const std::string& status, const std::string& mess
   w.key("momentum_scale").value(now.momentum_scale);
   w.key("max_speed").value(now.max_speed);
   w.key("max_density_deviation").value(now.max_density_deviation);
+  // Over every step of the run so far, not this state alone (health_monitor.hpp); not where the
+  // density column may vanish (MPS: an isolated particle's number density is 0, a deviation of 1).
+  if (!density_may_vanish_) {
+    const auto& extremes = health_.extremes();
+    w.key("run_max_density_deviation").value(extremes.density_deviation);
+    w.key("run_max_density_deviation_time").value(extremes.density_time);
+    w.key("run_max_fluid_volume_change").value(extremes.volume_change);
+    w.key("run_max_fluid_volume_change_time").value(extremes.volume_time);
+  }
   if (method_diagnostics_)
-    for (auto& [name, value] : method_diagnostics_(world_, res_)) w.key(name).value(value);
+    for (auto& [name, value] : method_diagnostics_(world_, res_)) {
+      w.key(name).value(value);
+      if (step_ == 0) continue;  // before the first step the method has computed nothing yet
+      auto [it, first] = diagnostic_range_.try_emplace(name, value, value);
+      if (!first) it->second = {std::min(it->second.first, value), std::max(it->second.second, value)};
+    }
+  w.end_object();
+  // The method's diagnostics at every summary of this process after its first step (each frame
+  // and the end): their least and largest, [min, max].
+  w.key("diagnostics_range").begin_object();
+  for (auto& [name, range] : diagnostic_range_) {
+    w.key(name).begin_array();
+    w.value(range.first);
+    w.value(range.second);
+    w.end_array();
+  }
   w.end_object();
   w.key("metrics").begin_object();
   for (auto& [name, value] : metrics()) w.key(name).value(value);

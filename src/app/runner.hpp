@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -407,6 +408,8 @@ class Runner {
   std::vector<std::pair<std::string, double>> method_parameters_;
   std::function<std::vector<std::pair<std::string, double>>(const World<D>&, const Resources&)>
       method_diagnostics_;
+  std::map<std::string, std::pair<double, double>>
+      diagnostic_range_;  // each one's least, largest at a summary
   World<D> world_;
   Resources res_;
   std::unique_ptr<Scheduler<D>> scheduler_;
