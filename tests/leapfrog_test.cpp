@@ -1,8 +1,10 @@
 // Seed 001's leapfrog integrator (eqs. 15-17, WCSPH's default since 2026-11-24), XSPH velocity
 // smoothing (eq. 36) and adaptive step (eq. 35) (issue 14; docs/wcsph.md). The leapfrog evaluates
 // the forces once per step where the midpoint integrator evaluates them twice; at the same step
-// (the same CFL) it must give the same physics: the dam-break criterion at a/d = 20 and 40, the hydrostatic
-// tank within 1%, and a run stopped and resumed from its checkpoint bit-identical to one that was not.
+// (the same CFL) it must give the same physics: the dam-break criterion at a/d = 20 and 40 (asserted
+// by tests/validation_dam_break_test.cpp, whose runs name the leapfrog: the same runs were made
+// twice until 2026-11-29), the same front as the midpoint, the hydrostatic tank within 1%, and a
+// run stopped and resumed from its checkpoint bit-identical to one that was not.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -27,8 +29,7 @@ long long pair_force_calls(const std::string& output) {
 
 }  // namespace
 
-TEST_CASE(
-    "leapfrog: one force evaluation per step, the dam-break criterion and the same front as the midpoint") {
+TEST_CASE("leapfrog: one force evaluation per step and the same dam-break front as the midpoint") {
   const double a = 0.25, g = 9.81, t_scale = std::sqrt(a / (2 * g));
   const std::string bin = RYUSHI_BINARY;
   auto run = [&](const std::string& name, const std::string& sets) {
@@ -45,13 +46,6 @@ TEST_CASE(
   auto [coarse, steps, calls] =
       run("leapfrog_20", "--set particles.spacing=0.0125 --set method.integrator=leapfrog");
   CHECK(calls == steps);
-  auto [fine, fine_steps, fine_calls] =
-      run("leapfrog_40", "--set particles.spacing=0.00625 --set method.integrator=leapfrog");
-  CHECK(fine_calls == fine_steps);
-  test::check_time_origin_criterion(coarse, fine);
-  const double convergence = test::front_difference(coarse, fine);
-  MESSAGE("leapfrog a/d = 20 against 40 over T <= 2.5: ", 100 * convergence, "%");
-  CHECK(convergence <= 0.03);
   // Against the midpoint at a/d = 20, at the same steps (the same CFL limit): both are second
   // order and the acoustic step is small against the flow's time scale, so the fronts agree
   // far inside the 1% asserted (measured 0.002%; a/d = 20 and 40 differ by 2.5%).

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "app/exit_codes.hpp"
 #include "app/run.hpp"
@@ -168,4 +169,104 @@ velocity = [1.0, 0.0]
   MESSAGE("largest shift across the layer in one step: fickian ", fickian, " d, optimised ", optimised, " d");
   CHECK(fickian > 1e-3);              // measured 0.0171 d (A h |v| dt |grad C| below the surface rows)
   CHECK(optimised < 1e-9 * fickian);  // round-off only
+}
+
+// The paper's density-based shifting (ISPH seed 000, eqs. 19-23; src/systems/shifting/
+// density_shifting.hpp) against its formula, recomputed from the frame: a periodic box of water
+// started with 20% disorder, translating at U = 0.5 m/s (no gravity, no pressure: the flow is
+// uniform), one ISPH step at dt = 0.2 d / U, the step at which C_shift was tuned (scale = C h).
+// Before the shift the particles only translated, so the shift saw the frame's x - dr:
+//   <rho>_i = beta sum_{|x_ij| <= d*} m_j W_ij (i included), beta = 1 / (d^2 sum_lattice W),
+//   dr_i = C h sum_{0 < |x_ij| <= d*} (V_j W_ij + <rho>_i / rho0 - 1 + <rho>_j / rho0 - 1) e_ij,
+// d* = 1.1 sqrt(2) d, V_j = m_j / rho_j, e_ij the unit vector from j to i. The mutation check's
+// C_shift x2 (tools/mutations.json) survived the whole suite until this case.
+TEST_CASE(
+    "shifting: density shifting moves each particle by C h (sum V_j W_ij e_ij + density excess terms)") {
+  auto dir = test::scratch("density_shift_box");
+  const double L = 0.4, d = 0.02, U = 0.5, dt = 0.2 * d / U, C = 0.005;
+  test::write_text(dir / "box.toml", R"([scene]
+dimension = 2
+name = "density_shift_box"
+[domain]
+min = [0.0, 0.0]
+max = [0.4, 0.4]
+periodic = [true, true]
+[particles]
+spacing = 0.02
+disorder = 0.2
+[material]
+density = 1000.0
+viscosity = 0.0
+[physics]
+gravity = [0.0, 0.0]
+[method]
+name = "isph"
+[shifting]
+model = "density"
+coefficient = 0.005
+[solver]
+preconditioner = "jacobi"
+[time]
+end = 0.008
+dt = 0.008
+[output]
+interval = 0.008
+fields = ["shift", "mass", "free_surface"]
+[[fluid]]
+min = [0.0, 0.0]
+max = [0.4, 0.4]
+velocity = [0.5, 0.0]
+)");
+  RunOptions opt;
+  opt.scene = (dir / "box.toml").string();
+  opt.out_dir = (dir / "out").string();
+  opt.quiet = true;
+  REQUIRE(run_scene(opt) == kExitDone);
+  auto frame = dir / "out" / "frames" / "frame_00001.h5";
+  auto x = test::read_dataset(frame, "position").values, shift = test::read_dataset(frame, "shift").values,
+       m = test::read_dataset(frame, "mass").values, rho = test::read_dataset(frame, "density").values,
+       surface = test::read_dataset(frame, "free_surface").values;
+  const std::size_t n = m.size();
+  REQUIRE(n == 400);
+  CHECK(std::count_if(surface.begin(), surface.end(), [](double s) { return s != 0; }) == 0);  // no surface
+  const double h = 1.2 * d, sigma = 10 / (7 * std::numbers::pi * h * h), rho0 = 1000,
+               radius = 1.1 * std::sqrt(2.0) * d;
+  auto W = [&](double r) {
+    const double q = r / h;
+    return sigma * (q < 1 ? 1 - 1.5 * q * q + 0.75 * q * q * q : q < 2 ? 0.25 * std::pow(2 - q, 3) : 0.0);
+  };
+  double lattice = 0;  // the centre, 4 neighbours at d, 4 at sqrt(2) d: all within d*
+  for (int a = -1; a <= 1; ++a)
+    for (int b = -1; b <= 1; ++b) lattice += W(d * std::hypot(a, b));
+  const double beta = 1 / (d * d * lattice);
+  auto wrap = [&](double s) { return s - L * std::round(s / L); };
+  auto offset = [&](std::size_t i, std::size_t j, int a) {  // x_j - x_i before the shift
+    return wrap((x[3 * j + a] - shift[3 * j + a]) - (x[3 * i + a] - shift[3 * i + a]));
+  };
+  std::vector<double> smoothed(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      if (double r = std::hypot(offset(i, j, 0), offset(i, j, 1)); r <= radius)
+        smoothed[i] += beta * m[j] * W(r);
+  double worst = 0, largest = 0, excess = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    double expected[2] = {0, 0};
+    excess = std::max(excess, std::abs(smoothed[i] / rho0 - 1));
+    for (std::size_t j = 0; j < n; ++j) {
+      const double rx = offset(i, j, 0), ry = offset(i, j, 1), r = std::hypot(rx, ry);
+      if (r == 0 || r > radius) continue;
+      const double weight = m[j] / rho[j] * W(r) + smoothed[i] / rho0 - 1 + smoothed[j] / rho0 - 1;
+      expected[0] -= weight * rx / r, expected[1] -= weight * ry / r;  // e_ij = -(x_j - x_i) / r
+    }
+    for (int a = 0; a < 2; ++a) {
+      expected[a] *= C * h * (dt * U / (0.2 * d));  // = C h at the tuned step
+      worst = std::max(worst, std::abs(shift[3 * i + a] - expected[a]));
+      largest = std::max(largest, std::abs(expected[a]));
+    }
+  }
+  MESSAGE("largest density shift ", largest / d, " d (density excess up to ", excess,
+          "); largest difference from the formula ", worst / d, " d");
+  CHECK(excess > 0.01);           // the disorder is there for the shift to undo
+  CHECK(largest > 1e-3 * d);      // and the particles did shift
+  CHECK(worst < 1e-6 * largest);  // round-off of x - dr only
 }

@@ -61,7 +61,6 @@ slow("rheology: power-law Poiseuille flows (n = 0.5 and 1.5) reach their analyti
 slow("rheology: a Bingham Poiseuille flow reaches the analytic plug profile within 2%" 18)
 slow("heat: a hot fluid cooling on a cold plate follows the Arrhenius law particle by particle and slows" 12)
 slow("heat: a heat-flux wall and a fixed-temperature plate follow their series to the steady slope q/k" 10)
-slow("leapfrog: one force evaluation per step, the dam-break criterion and the same front as the midpoint" 12)
 slow("energy: a WCSPH sloshing tank with the midpoint integrator never gains energy and keeps the linear period" 14)
 slow("elastic: a clamped plate swings at the Euler-Bernoulli period within 5% at H/d = 16 and 20" 50)
 slow("elastic: the plate keeps its energy over ten periods" 20)
