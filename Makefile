@@ -49,7 +49,8 @@ run: build py-deps
 	$(BUILD)/ryushi run scenes/dam_break_2d.toml --out out/dam_break_2d --overwrite
 	$(BUILD)/ryushi render out/dam_break_2d --frames last
 
-# The suite less the three 200-period sloshing tanks (label long), which test-long runs.
+# The suite less the tests labelled long (the three 200-period sloshing tanks and three heavy
+# validations, tests/slow_tests.cmake), which test-long runs; CI runs both.
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) -LE long
 
