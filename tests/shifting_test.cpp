@@ -23,13 +23,35 @@
 
 using namespace ryushi;
 
+namespace {
+
+// Runs a one-step scene written to DIR/NAME.toml; the path of its first frame.
+std::filesystem::path run_one_step(const std::filesystem::path& dir, const std::string& name,
+                                   const std::string& text) {
+  test::write_text(dir / (name + ".toml"), text);
+  RunOptions opt;
+  opt.scene = (dir / (name + ".toml")).string();
+  opt.out_dir = (dir / "out").string();
+  opt.quiet = true;
+  REQUIRE(run_scene(opt) == kExitDone);
+  return dir / "out" / "frames" / "frame_00001.h5";
+}
+
+// The 2D cubic spline of smoothing length h (seed 002 eq. 11), written out here.
+double cubic_spline_2d(double r, double h) {
+  const double q = r / h, sigma = 10 / (7 * std::numbers::pi * h * h);
+  return sigma * (q < 1 ? 1 - 1.5 * q * q + 0.75 * q * q * q : q < 2 ? 0.25 * std::pow(2 - q, 3) : 0.0);
+}
+
+}  // namespace
+
 TEST_CASE("shifting: XSPH shifts each particle by eps dt sum 2 m_j/(rho_i + rho_j) (v_j - v_i) W_ij") {
   auto dir = test::scratch("xsph_shear");
   const double L = 0.4, d = 0.02, dt = 1e-3, eps = 0.5;
   // The shear comes from two opposite blocks per half: the velocity key is per block, so the
   // profile is a square wave in y (u = +U below L/2, -U above); W_ij then sees v_j - v_i = 2U only
   // across the two interfaces.
-  test::write_text(dir / "shear.toml", R"([scene]
+  const auto frame = run_one_step(dir, "shear", R"([scene]
 dimension = 2
 name = "xsph_shear"
 [domain]
@@ -66,22 +88,13 @@ min = [0.0, 0.2]
 max = [0.4, 0.4]
 velocity = [-0.1, 0.0]
 )");
-  RunOptions opt;
-  opt.scene = (dir / "shear.toml").string();
-  opt.out_dir = (dir / "out").string();
-  opt.quiet = true;
-  REQUIRE(run_scene(opt) == kExitDone);
-  auto frame = dir / "out" / "frames" / "frame_00001.h5";
   auto x = test::read_dataset(frame, "position").values, shift = test::read_dataset(frame, "shift").values,
        v = test::read_dataset(frame, "velocity").values, m = test::read_dataset(frame, "mass").values,
        rho = test::read_dataset(frame, "density").values;
   const std::size_t n = m.size();
   REQUIRE(n == 400);
-  const double h = 1.2 * d, sigma = 10 / (7 * std::numbers::pi * h * h);
-  auto W = [&](double r) {
-    const double q = r / h;
-    return sigma * (q < 1 ? 1 - 1.5 * q * q + 0.75 * q * q * q : q < 2 ? 0.25 * std::pow(2 - q, 3) : 0.0);
-  };
+  const double h = 1.2 * d;
+  auto W = [&](double r) { return cubic_spline_2d(r, h); };
   auto wrap = [&](double s) { return s - L * std::round(s / L); };
   double worst = 0, largest = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -184,7 +197,7 @@ TEST_CASE(
     "shifting: density shifting moves each particle by C h (sum V_j W_ij e_ij + density excess terms)") {
   auto dir = test::scratch("density_shift_box");
   const double L = 0.4, d = 0.02, U = 0.5, dt = 0.2 * d / U, C = 0.005;
-  test::write_text(dir / "box.toml", R"([scene]
+  const auto frame = run_one_step(dir, "box", R"([scene]
 dimension = 2
 name = "density_shift_box"
 [domain]
@@ -217,24 +230,15 @@ min = [0.0, 0.0]
 max = [0.4, 0.4]
 velocity = [0.5, 0.0]
 )");
-  RunOptions opt;
-  opt.scene = (dir / "box.toml").string();
-  opt.out_dir = (dir / "out").string();
-  opt.quiet = true;
-  REQUIRE(run_scene(opt) == kExitDone);
-  auto frame = dir / "out" / "frames" / "frame_00001.h5";
   auto x = test::read_dataset(frame, "position").values, shift = test::read_dataset(frame, "shift").values,
        m = test::read_dataset(frame, "mass").values, rho = test::read_dataset(frame, "density").values,
        surface = test::read_dataset(frame, "free_surface").values;
   const std::size_t n = m.size();
   REQUIRE(n == 400);
   CHECK(std::count_if(surface.begin(), surface.end(), [](double s) { return s != 0; }) == 0);  // no surface
-  const double h = 1.2 * d, sigma = 10 / (7 * std::numbers::pi * h * h), rho0 = 1000,
-               radius = 1.1 * std::sqrt(2.0) * d;
-  auto W = [&](double r) {
-    const double q = r / h;
-    return sigma * (q < 1 ? 1 - 1.5 * q * q + 0.75 * q * q * q : q < 2 ? 0.25 * std::pow(2 - q, 3) : 0.0);
-  };
+  const double h = 1.2 * d, rho0 = 1000, radius = 1.1 * std::sqrt(2.0) * d;
+  auto W = [&](double r) { return cubic_spline_2d(r, h); };
+
   double lattice = 0;  // the centre, 4 neighbours at d, 4 at sqrt(2) d: all within d*
   for (int a = -1; a <= 1; ++a)
     for (int b = -1; b <= 1; ++b) lattice += W(d * std::hypot(a, b));
