@@ -85,3 +85,67 @@ TEST_CASE("probes: water_height reads the water surface, not particles clinging 
     CHECK(probes["dry"].front() == doctest::Approx(0.6));
   }
 }
+
+namespace {
+
+// Water 0.25 m deep in a 0.5 m tank (WCSPH, three wall layers) with one wall pressure sensor,
+// given as the lines of its [[probe]] table after `type` (line 25 on).
+std::string tank_with_sensor(const std::string& sensor_lines) {
+  return R"([scene]
+dimension = 2
+[domain]
+min = [-0.1, -0.1]
+max = [0.6, 0.6]
+[particles]
+spacing = 0.025
+[material]
+density = 1000.0
+[method]
+name = "wcsph"
+[time]
+end = 0.001
+[[fluid]]
+min = [0.0, 0.0]
+max = [0.5, 0.25]
+[[wall]]
+min = [0.0, 0.0]
+max = [0.5, 0.5]
+layers = 3
+[[probe]]
+name = "sensor"
+type = "wall_pressure"
+diameter = 0.005
+)" + sensor_lines;
+}
+
+}  // namespace
+
+// Issue 57, acceptance 4: a sensor off any wall, a normal into the wall, a zero diameter: exit 2
+// with the place of the key at fault (the first two need the particles: `ryushi check` builds them).
+TEST_CASE("probes: bad wall sensor definitions exit 2 at the key's line and column") {
+  auto dir = test::scratch("probe_wall_sensor_bad");
+  auto check = [&](const std::string& text, const std::string& expected) {
+    test::write_text(dir / "bad.toml", text);
+    auto r = test::run_command(std::string(RYUSHI_BINARY) + " check " + (dir / "bad.toml").string());
+    CHECK(r.code == kExitBadInput);
+    CHECK_MESSAGE(r.output.find(expected) != std::string::npos, r.output);
+  };
+  const std::string on_left_wall = "position = [0.0, 0.1]\n";
+  // The good one passes (so that the others fail for their own reason).
+  test::write_text(dir / "good.toml", tank_with_sensor(on_left_wall + "normal = [1.0, 0.0]\n"));
+  CHECK(test::run_command(std::string(RYUSHI_BINARY) + " check " + (dir / "good.toml").string()).code == 0);
+  check(tank_with_sensor("position = [0.2, 0.1]\nnormal = [1.0, 0.0]\n"),
+        "bad.toml:25:12: [[probe]] 'sensor': the sensor lies off any wall: the nearest wall particle is");
+  check(tank_with_sensor(on_left_wall + "normal = [-1.0, 0.0]\n"),
+        "bad.toml:26:10: [[probe]] 'sensor': the sensor's normal points into the wall or along it");
+  check(tank_with_sensor(on_left_wall + "normal = [0.0, 1.0]\n"),
+        "bad.toml:26:10: [[probe]] 'sensor': the sensor's normal");
+  check(tank_with_sensor(on_left_wall + "normal = [0.0, 0.0]\n"),
+        "bad.toml:26:10: [[probe]] 'sensor' of type wall_pressure: the normal must not be zero");
+  check(tank_with_sensor(on_left_wall), "[[probe]] 'sensor' of type wall_pressure needs a normal");
+  auto zero = tank_with_sensor(on_left_wall + "normal = [1.0, 0.0]\n");
+  zero.replace(zero.find("diameter = 0.005"), 16, "diameter = 0.0");
+  check(zero, "bad.toml:24:12: 'diameter' in [[probe]] #0 is 0; it must be > 0");
+  check(tank_with_sensor("normal = [1.0, 0.0]\n"),
+        "[[probe]] 'sensor' of type wall_pressure needs a position");
+}

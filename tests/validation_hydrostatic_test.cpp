@@ -1,5 +1,6 @@
 // Acceptance 1 of the foundation issue: a tank of water at rest (seed 002 section 5.1).
-// After settling, the probe pressures at depths 0.1 ... 0.45 m must be within 1% of rho g depth
+// After settling, the probe pressures at depths 0.1 ... 0.45 m, and the wall sensors' (issue 57:
+// a tank at rest, every sensor within 1% of rho g depth), must be within 1% of rho g depth
 // (the paper reports 3.7% at its deepest probe) and the fluid must be at rest:
 // max speed < 1e-3 sqrt(g H).
 #include <doctest/doctest.h>
@@ -31,7 +32,11 @@ TEST_CASE("validation: hydrostatic tank settles to rho g depth within 1 percent"
                                                            {"p_depth_0.20", 0.20},
                                                            {"p_depth_0.30", 0.30},
                                                            {"p_depth_0.40", 0.40},
-                                                           {"p_depth_0.45", 0.45}};
+                                                           {"p_depth_0.45", 0.45},
+                                                           // the wall sensors (probes.hpp)
+                                                           {"sensor_left_0.40", 0.40},
+                                                           {"sensor_right_0.25", 0.25},
+                                                           {"sensor_floor_0.50", 0.50}};
   // Every sample in the last quarter of the run, not just the final one: settled means staying put.
   for (std::size_t k = 0; k < time.size(); ++k) {
     if (time[k] < 1.5) continue;

@@ -146,6 +146,7 @@ int check_scene(const std::string& path, const std::vector<std::string>& sets,
       Resources res;
       Profiler profiler;
       auto method = build_method<D>(scene, world);
+      probes_of(scene, world, method.context);  // a wall sensor off any wall, or facing into it
       Scheduler<D> s(std::move(method.pipeline), world, res, profiler);
       std::printf(
           "%s: OK (%dD %s, %zu particles, %zu systems in the step graph; memory about %s of %s "

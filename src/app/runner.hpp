@@ -26,6 +26,7 @@
 #include "app/progress.hpp"
 #include "app/run.hpp"
 #include "app/run_files.hpp"
+#include "app/run_probes.hpp"
 #include "ecs/scheduler.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json.hpp"
@@ -37,7 +38,6 @@
 #include "systems/io/xdmf.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
 #include "systems/pressure/pressure_system.hpp"
-#include "systems/probes/probes.hpp"
 
 namespace ryushi {
 
@@ -65,7 +65,7 @@ class Runner {
     PipelineOptions po{opt_.dump_matrix_dir, opt_.dump_step};
     auto method = build_method<D>(scene_, world_, po);
     context_ = method.context;
-    for (const auto& q : scene_.probes) probes_.push_back(Probe{q.type, q.position, q.solid, q.axis});
+    probes_ = probes_of(scene_, world_, context_);
     search_cell_ = method.search_cell;
     method_parameters_ = method.parameters;
     method_diagnostics_ = method.diagnostics;

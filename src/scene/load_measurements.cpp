@@ -13,23 +13,50 @@
 
 namespace ryushi {
 
+namespace {
+
+// A wall_pressure probe's face: `normal` (made unit) and `diameter`, both required; where the
+// particles are needed (is it on a wall, does the normal point away from it) the run checks.
+void load_wall_sensor(toml::table& root, Validator& val, const SceneEntries& at, std::size_t i,
+                      ProbeSpec& p) {
+  const std::string about = "[[probe]] '" + p.name + "' of type wall_pressure";
+  auto* normal = at.where("probe", i, "normal");
+  if (!normal) val.fail(root["probe"][i].node(), path_of("probe", i, "normal"), about + " needs a normal");
+  p.normal = vec_of(*normal);
+  double length = 0;
+  for (double c : p.normal) length += c * c;
+  length = std::sqrt(length);
+  if (!(length > 0)) val.fail(normal, path_of("probe", i, "normal"), about + ": the normal must not be zero");
+  for (double& c : p.normal) c /= length;
+  auto diameter = root["probe"][i]["diameter"].value<double>();
+  if (!diameter)
+    val.fail(root["probe"][i].node(), path_of("probe", i, "diameter"), about + " needs a diameter");
+  p.diameter = *diameter;
+  p.position_where = val.location(at.where("probe", i, "position"), path_of("probe", i, "position"));
+  p.normal_where = val.location(normal, path_of("probe", i, "normal"));
+}
+
+}  // namespace
+
 void load_measurements(toml::table& root, Validator& val, Scene& sc) {
   const std::string& path = sc.path;
   const int D = sc.dimension;
   const SceneEntries at{root, sc};
   if (auto* arr = root["probe"].as_array()) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
-      ProbeSpec p{
-          *root["probe"][i]["name"].value<std::string>(), *root["probe"][i]["type"].value<std::string>(), {}};
+      ProbeSpec p;
+      p.name = *root["probe"][i]["name"].value<std::string>();
+      p.type = *root["probe"][i]["type"].value<std::string>();
       if (auto* pos = at.where("probe", i, "position")) p.position = vec_of(*pos);
       if ((p.type == "pressure" || p.type == "water_height" || p.type == "solid_displacement" ||
-           p.type == "solid_stress") &&
+           p.type == "solid_stress" || p.type == "wall_pressure") &&
           p.position.empty())
         val.fail(&(*arr)[i], path_of("probe", i, "position"),
                  "[[probe]] '" + p.name + "' of type " + p.type + " needs a position");
       if (!p.position.empty() && !at.inside(p.position, p.position))
         val.fail(at.where("probe", i, "position"), path_of("probe", i, "position"),
                  "[[probe]] '" + p.name + "' lies outside the domain");
+      if (p.type == "wall_pressure") load_wall_sensor(root, val, at, i, p);
       if (p.type == "force") {
         auto solid_name = root["probe"][i]["solid"].value<std::string>();
         if (!solid_name)

@@ -103,6 +103,11 @@ struct ProbeSpec {
   std::string name, type;
   std::vector<double> position;
   int solid = -1, axis = 0;  // force: the [[solid]]'s index and the component
+  std::vector<double> normal;  // wall_pressure
+  double diameter = 0;         // wall_pressure
+  // "file:line:col" of `position` and `normal`, for what only the particles can show (a sensor
+  // off any wall, a normal into the wall: checked when the run starts).
+  std::string position_where, normal_where;
 };
 // [[metric]] (src/metrics/metrics.hpp).
 struct MetricSpec {

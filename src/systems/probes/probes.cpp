@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "systems/elastic/elastic_parameters.hpp"
 #include "systems/probes/solid_force.hpp"
 #include "systems/probes/solid_surface_force.hpp"
+#include "systems/probes/wall_sensor.hpp"
 
 namespace ryushi {
 
@@ -105,7 +107,27 @@ double water_surface(const Vec<D>& base, const World<D>& world, const Kernel<D>&
   return in_water ? top : base[D - 1];
 }
 
+template <int D>
+WallSensor<D> wall_sensor_of(const Probe& probe) {
+  WallSensor<D> s;
+  for (int a = 0; a < D; ++a) s.centre[a] = probe.position[a], s.normal[a] = probe.normal[a];
+  s.normal.normalize();
+  s.diameter = probe.diameter;
+  return s;
+}
+
 }  // namespace
+
+template <int D>
+std::vector<SensorProblem> wall_sensor_problems(const std::vector<Probe>& probes, const World<D>& world,
+                                                const MethodContext<D>& context) {
+  std::vector<SensorProblem> problems;
+  for (auto& probe : probes)
+    problems.push_back(probe.type == "wall_pressure" ? wall_sensor_problem(wall_sensor_of<D>(probe), world,
+                                                                           context.domain, context.spacing)
+                                                     : SensorProblem{});
+  return problems;
+}
 
 template <int D>
 std::vector<double> sample_probes(const std::vector<Probe>& probes, const World<D>& world,
@@ -122,6 +144,7 @@ std::vector<double> sample_probes(const std::vector<Probe>& probes, const World<
   auto& v = world.column(components::velocity);
   const double lowest = -std::numeric_limits<double>::infinity();
   std::vector<double> out;
+  std::optional<FluidCells<D>> sensor_cells;  // built once, for the wall_pressure probes
   for (auto& probe : probes) {
     Vec<D> at = Vec<D>::Zero();
     for (std::size_t a = 0; a < probe.position.size(); ++a) at[a] = probe.position[a];
@@ -139,6 +162,11 @@ std::vector<double> sample_probes(const std::vector<Probe>& probes, const World<
           },
           false);
       out.push_back(den > 0 ? num / den : std::numeric_limits<double>::quiet_NaN());
+    } else if (probe.type == "wall_pressure") {
+      if (!sensor_cells)
+        sensor_cells.emplace(world, domain, std::max(kernel.support(), sensor_kernel<D>(d).support()));
+      out.push_back(
+          wall_sensor_pressure(wall_sensor_of<D>(probe), world, *sensor_cells, domain, d, rho0, gravity));
     } else if (probe.type == "surge_front") {
       auto r = reduce_particles(
           world.size(), {lowest, 0.0},
@@ -205,6 +233,10 @@ std::vector<double> sample_probes(const std::vector<Probe>& probes, const World<
   return out;
 }
 
+template std::vector<SensorProblem> wall_sensor_problems<2>(const std::vector<Probe>&, const World<2>&,
+                                                            const MethodContext<2>&);
+template std::vector<SensorProblem> wall_sensor_problems<3>(const std::vector<Probe>&, const World<3>&,
+                                                            const MethodContext<3>&);
 template std::vector<double> sample_probes<2>(const std::vector<Probe>&, const World<2>&,
                                               const MethodContext<2>&);
 template std::vector<double> sample_probes<3>(const std::vector<Probe>&, const World<3>&,

@@ -26,6 +26,8 @@
 //   kinetic_energy    sum over fluid particles of m |v|^2 / 2 (J; J/m in 2D, per unit depth)
 //   potential_energy  sum over fluid particles of -m g . x (J; zero at the origin): with the
 //                     kinetic energy, the mechanical energy a sloshing tank may only lose
+//   wall_pressure     a pressure sensor on a wall: the fluid's surface pressure averaged over
+//                     the sensor's face (wall_sensor.hpp)
 //   force             a component of the fluid's force on a [[solid]]: WCSPH's pair-force
 //                     reaction (solid_force.hpp), else the surface pressure and wall shear
 //                     on the body's first layer (solid_surface_force.hpp)
@@ -34,6 +36,7 @@
 
 #include "ecs/world.hpp"
 #include "systems/method_context.hpp"
+#include "systems/probes/wall_sensor.hpp"  // SensorProblem
 
 namespace ryushi {
 
@@ -42,7 +45,14 @@ struct Probe {
   std::string type;
   std::vector<double> position;
   int solid = -1, axis = 0;  // force: the [[solid]]'s index and the component
+  std::vector<double> normal;  // wall_pressure: out of the wall, into the fluid (unit)
+  double diameter = 0;         // wall_pressure: the sensor face's
 };
+
+// Why each wall_pressure probe cannot read a wall, by the probe's index (empty where it can).
+template <int D>
+std::vector<SensorProblem> wall_sensor_problems(const std::vector<Probe>& probes, const World<D>& world,
+                                                const MethodContext<D>& context);
 
 template <int D>
 std::vector<double> sample_probes(const std::vector<Probe>& probes, const World<D>& world,
