@@ -136,7 +136,7 @@ TEST_CASE("container: water at rest in a round tank keeps rho g depth on average
       if (probes["time"][k] >= 1.0) sum += probes[name][k], ++samples;
     REQUIRE(samples >= 90);
     const double error = sum / samples / (rho_g * depth) - 1;
-    MESSAGE(name, ": mean over t >= 1 s ", error * 100, "% from rho g depth");
+    MESSAGE(std::string(name), ": mean over t >= 1 s ", error * 100, "% from rho g depth");
     CHECK(std::abs(error) < 0.05);
   }
 }
@@ -371,7 +371,8 @@ TEST_CASE("container: the force on a tank of water at rest is the water's weight
       if (probes["time"][k] >= 1.0) fy += probes["fy"][k], fx += probes["fx"][k], ++samples;
     REQUIRE(samples >= 90);
     fy /= samples, fx /= samples;
-    MESSAGE(method, ": force ", fy, " N/m against the weight ", -weight, " (", (-fy / weight - 1) * 100, "%)");
+    MESSAGE(std::string(method), ": force ", fy, " N/m against the weight ", -weight, " (",
+            (-fy / weight - 1) * 100, "%)");
     CHECK(std::abs(-fy / weight - 1) < bound);
     CHECK(std::abs(fx) < 0.01 * weight);  // the side walls' pushes cancel
   }

@@ -207,47 +207,6 @@ TEST_CASE("solid: MPS and ISPH read the sliding plate's drag from their own wall
   }
 }
 
-TEST_CASE("solid: a dam break pushes on an obstacle from when its front arrives") {
-  auto dir = test::unique_scratch("dam_break_obstacle");
-  auto r = test::run_command(bin() + " run " + test::scene_path("dam_break_obstacle_2d.toml") +
-                             " --quiet --out " + dir.string() + " --set time.end=0.4");
-  REQUIRE_MESSAGE(r.code == 0, r.output);
-  auto csv = test::read_csv(dir / "probes.csv");
-  const auto& t = csv["time"];
-  const auto& front = csv["surge_front"];
-  const auto& fx = csv["block_fx"];
-  const double support = 2 * 1.5 * 0.0125, block = 0.5;
-  std::size_t peak = 0;
-  for (std::size_t k = 0; k < t.size(); ++k) {
-    if (std::abs(fx[k]) > std::abs(fx[peak])) peak = k;
-    // No fluid particle within the kernel support of the block: no force at all.
-    if (front[k] < block - support) CHECK(fx[k] == 0.0);
-  }
-  CHECK(front[peak] >= block - 0.0125);  // the peak comes with the front at the block, not before
-  CHECK(fx[peak] > 0);                   // pushed downstream
-  CHECK(t[peak] < 0.25);                 // in the impact, not later
-  // Water over and around the block, not through it: in no frame a fluid particle's centre past
-  // the block's first wall layer (d/2 inside its faces; a centre grazing the upstream top corner
-  // comes within 0.07 d of it with either integrator), every particle still there.
-  const double d = 0.0125;
-  int k = 0;
-  for (;; ++k) {
-    const auto frame = test::frame_path(dir, k);
-    if (!std::filesystem::exists(frame)) break;
-    auto kind = test::read_dataset(frame, "kind").values, x = test::read_dataset(frame, "position").values;
-    std::size_t fluid = 0, inside = 0;
-    for (std::size_t i = 0; i < kind.size(); ++i) {
-      if (kind[i] != 0) continue;
-      ++fluid;
-      inside += x[3 * i] > 0.5 + d / 2 && x[3 * i] < 0.6 - d / 2 && x[3 * i + 1] < 0.1 - d / 2;
-    }
-    CAPTURE(k);
-    CHECK(fluid == 20 * 40);
-    CHECK(inside == 0);
-  }
-  REQUIRE_MESSAGE(k == 21, k << " frames checked");  // t = 0 to 0.4 s every 0.02 s: none skipped
-}
-
 TEST_CASE("solid: bad geometry is bad input naming the solid and the problem") {
   const std::string base =
       "[scene]\ndimension = 2\n[domain]\nmin = [-0.1, -0.1]\nmax = [1.1, 1.1]\n[particles]\nspacing = 0.02\n"
@@ -345,7 +304,8 @@ TEST_CASE("solid: a piston wave maker makes the waves of linear wave-maker theor
 // the paddle's velocity in its wall rows (eq. 17). Heights 0.6 m and 1 m from the paddle in
 // periods 2-4 within 10% of Biesel's on average, each within 15% (measured below). At h / d =
 // 10 the heights stray by up to 17%. The mean force on the paddle over whole periods: the
-// hydrostatic thrust within 10%, as under WCSPH (measured -203 N/m, samples 0.01 s apart within
+// hydrostatic thrust within 10%, as under WCSPH (measured -196.9 N/m; -203 N/m from the wall
+// layer's own pressure before the surface pressure of issue 57; samples 0.01 s apart within
 // 169 N/m of each other). Before the paddle's foot took its face's normal (geometry: a corner on
 // a wall) the bisector there made pressure spikes of 20 kPa and the force swung by +-3 kN/m.
 TEST_CASE("solid: an ISPH piston wave maker makes the waves of linear wave-maker theory at h/d = 20") {

@@ -114,9 +114,8 @@ SceneParticles<D> append_scene_particles(
   return particles;
 }
 
-// For a method whose pressure lives on the walls' first layer (MPS, ISPH) and a scene with a
-// `force` probe: each body particle's surface element, area times the unit normal into the body
-// (zero elsewhere), for the pressure integral of solid_surface_force.hpp. `appended`: what
+// For a scene with a `force` probe: each body particle's surface element, area times the unit normal into the
+// body (zero elsewhere), for the pressure integral of solid_surface_force.hpp. `appended`: what
 // append_scene_particles returned, its walls the world's last particles.
 template <int D>
 void add_surface_elements(const Scene& s, const SceneParticles<D>& appended, World<D>& world) {

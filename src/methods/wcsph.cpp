@@ -104,6 +104,7 @@ void populate_world(const Scene& s, const WcsphParameters<D>& p, World<D>& world
         return std::pair{rho, p.pressure(rho)};
       },
       [](int) { return kWall; });
+  add_surface_elements(s, appended, world);  // the force probe's pressure integral
   if (s.models_heat()) add_thermal_state<D>(s, appended, world);
   if (!s.elastic.empty()) add_elastic_bodies<D>(s, p.rho0, world);
 }

@@ -14,8 +14,9 @@ namespace ryushi {
 
 // How the `force` probe reads the fluid's force on a [[solid]] body.
 enum class SolidForceReading {
-  WallLayer,     // the pressure and wall shear on the body's first layer (solid_surface_force.hpp)
-  PairReaction,  // the reaction to the method's pair forces on the body's particles (solid_force.hpp)
+  WallLayer,  // the surface pressure and the wall shear on the body's first layer (solid_surface_force.hpp)
+  PairReaction,  // the surface pressure, and the reaction to the method's viscous pair forces
+                 // (solid_force.hpp)
 };
 
 template <int D>

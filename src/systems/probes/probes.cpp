@@ -144,7 +144,7 @@ std::vector<double> sample_probes(const std::vector<Probe>& probes, const World<
   auto& v = world.column(components::velocity);
   const double lowest = -std::numeric_limits<double>::infinity();
   std::vector<double> out;
-  std::optional<FluidCells<D>> sensor_cells;  // built once, for the wall_pressure probes
+  std::optional<SensorCells<D>> sensor_cells;  // built once, for the wall_pressure probes
   for (auto& probe : probes) {
     Vec<D> at = Vec<D>::Zero();
     for (std::size_t a = 0; a < probe.position.size(); ++a) at[a] = probe.position[a];
@@ -196,12 +196,16 @@ std::vector<double> sample_probes(const std::vector<Probe>& probes, const World<
           false);
       out.push_back(r.first);
     } else if (probe.type == "force") {
-      // As the method reads it: the reaction to its pair forces (WCSPH), or the pressure and
-      // shear on the first wall layer (MPS, ISPH).
+      // The surface pressure's integral (every method), and the shear as the method reads it: the
+      // reaction to its laminar pair term (WCSPH), or on the first wall layer (MPS, ISPH).
       const SurfaceForceParameters surface{d, rho0, context.viscosity, context.wall_layer_viscous};
-      const Vec<D> force = context.solid_force == SolidForceReading::PairReaction
-                               ? solid_force<D>(probe.solid, world, kernel, domain)
-                               : solid_surface_force<D>(probe.solid, world, kernel, domain, gravity, surface);
+      Vec<D> force = Vec<D>::Zero();
+      if (context.solid_force == SolidForceReading::PairReaction)
+        force = solid_pressure_force<D>(probe.solid, world, force_cells(world, kernel, domain, d), domain,
+                                        gravity, surface) +
+                solid_force<D>(probe.solid, world, kernel, domain, /*with_pressure=*/false);
+      else
+        force = solid_surface_force<D>(probe.solid, world, kernel, domain, gravity, surface);
       out.push_back(force[probe.axis]);
     } else if (probe.type == "solid_displacement" || probe.type == "solid_stress") {
       // The elastic particle that started nearest the probe.

@@ -1,23 +1,24 @@
 #pragma once
-// The force of the fluid on a [[solid]] body (probe type `force`) for the methods whose pressure
-// lives on the body's first wall layer (MPS: the pressure-solved wall particles; ISPH: its one
-// layer with Neumann rows): the pressure integrated over the surface,
-//   F_p = sum_{w in body, layer 1} p_s,w S_w,
+// The force of the fluid on a [[solid]] body (probe type `force`), the same for every method in
+// its pressure part: the surface pressure of the wall sensors (wall_sensor.hpp) integrated over
+// the body's surface,
+//   F_p = sum_{w in body, layer 1} p_s(x_w - n_w d/2) S_w,
 // S_w = A_w n_w the particle's surface element (its share A_w of the body's surface, n_w the unit
-// normal from the fluid into the body; solid_shape.hpp), and p_s,w the pressure at the surface,
-// half a spacing before the particle: p_w - rho0 (g - a_w) . n_w d/2 (a wall's normal pressure
-// gradient is rho (g - a_w) . n, the fluid's normal acceleration being the wall's: Adami's
-// reasoning), over the particles with fluid within a support (dry ones carry the air's p = 0);
-// and the wall shear from the fluid beside them,
+// normal from the fluid into the body; solid_shape.hpp) and x_w - n_w d/2 the point of the surface
+// in front of it, so that a sensor on the body and its force read one pressure field. Before
+// (2026-11-29) MPS and ISPH took the wall particle's own pressure carried half a spacing out,
+// WCSPH the reaction to its pair forces: on a plate holding back a resting tank (H/d = 20) the
+// three read -2.5% (WCSPH), +2.1% (MPS) and -0.02% (ISPH) of the hydrostatic thrust.
+// The shear: MPS takes its own viscous term's reaction over the pairs of fluid and the body's
+// pressure-layer particles (mps_explicit_forces.hpp), F_v = sum_f sum_w m_f nu 2D / (lambda0 n0)
+// (v_f - v_w) w_fw; WCSPH the reaction to its laminar pair term (solid_force.hpp); ISPH the
+// Shepard slope of the fluid beside each particle,
 //   F_v = sum_w mu (v~_w - v_w)_t / delta_w A_w,
 // v~_w and delta_w the Shepard averages (kernel weights) of the fluid's velocity and of its
 // distance from the particle along -n_w, (.)_t the part along the wall: the slope of a velocity
-// profile that is zero relative to the wall at the wall particle, where ISPH holds it. MPS takes
-// its own viscous term's reaction instead, over the pairs of fluid and the body's pressure-layer
-// particles (mps_explicit_forces.hpp): F_v = sum_f sum_w m_f nu 2D / (lambda0 n0) (v_f - v_w) w_fw.
-// (The Shepard slope read 36% over the Couette series under MPS, whose velocity steepens next to
-// its walls; the pair reaction is what the fluid actually felt.)
-// WCSPH's force is the reaction to its own pair forces instead (solid_force.hpp).
+// profile that is zero relative to the wall at the wall particle, where ISPH holds it. (The
+// Shepard slope read 36% over the Couette series under MPS, whose velocity steepens next to its
+// walls; the pair reaction is what the fluid actually felt.)
 #include <cmath>
 #include <span>
 
@@ -25,6 +26,7 @@
 #include "kernels/kernel.hpp"
 #include "systems/neighbour/domain.hpp"
 #include "systems/probes/fluid_cells.hpp"
+#include "systems/probes/wall_sensor.hpp"
 
 namespace ryushi {
 
@@ -33,21 +35,47 @@ struct SurfaceForceParameters {
   double mps_viscous = 0;  // MPS: nu 2D / (lambda0 n0), its Laplacian's; 0: the Shepard wall slope
 };
 
+// The pressure part F_p (above), every method's.
+template <int D>
+Vec<D> solid_pressure_force(int body, const World<D>& world, const SensorCells<D>& cells,
+                            const Domain<D>& domain, const Vec<D>& gravity, const SurfaceForceParameters& q) {
+  auto& x = world.column(components::position);
+  auto& owner = world.column(components::body);
+  auto& element = world.column(components::surface_element);
+  std::span<const Vec<D>> acceleration;
+  if (world.has(components::body_acceleration.name))
+    acceleration = world.column(components::body_acceleration);
+  const Kernel<D> sensor = sensor_kernel<D>(q.spacing);
+  Vec<D> force = Vec<D>::Zero();
+  for (std::size_t w = 0; w < world.size(); ++w) {
+    if (owner[w] != body) continue;
+    const double area = element[w].norm();
+    if (area == 0) continue;
+    const Vec<D> surface = x[w] - 0.5 * q.spacing / area * element[w];
+    const Vec<D> felt = acceleration.empty() ? gravity : Vec<D>(gravity - acceleration[w]);
+    force += surface_pressure_at(surface, world, cells, domain, sensor, q.rho0, felt) * element[w];
+  }
+  return force;
+}
+
+// The cells for both: a support of the method's kernel and of the sensor's.
+template <int D>
+SensorCells<D> force_cells(const World<D>& world, const Kernel<D>& kernel, const Domain<D>& domain,
+                           double spacing) {
+  return SensorCells<D>(world, domain, std::max(kernel.support(), sensor_kernel<D>(spacing).support()));
+}
+
 template <int D>
 Vec<D> solid_surface_force(int body, const World<D>& world, const Kernel<D>& kernel, const Domain<D>& domain,
                            const Vec<D>& gravity, const SurfaceForceParameters& q) {
   auto& x = world.column(components::position);
   auto& owner = world.column(components::body);
-  auto& p = world.column(components::pressure);
   auto& v = world.column(components::velocity);
   auto& element = world.column(components::surface_element);
   auto& kind = world.column(components::kind);
   auto& m = world.column(components::mass);
-  std::span<const Vec<D>> acceleration;
-  if (world.has(components::body_acceleration.name))
-    acceleration = world.column(components::body_acceleration);
-  const FluidCells<D> cells(world, domain, kernel.support());
-  Vec<D> force = Vec<D>::Zero();
+  const SensorCells<D> cells = force_cells(world, kernel, domain, q.spacing);
+  Vec<D> force = solid_pressure_force(body, world, cells, domain, gravity, q);
   for (std::size_t w = 0; w < world.size(); ++w) {
     if (owner[w] != body) continue;
     const double area = element[w].norm();
@@ -55,7 +83,7 @@ Vec<D> solid_surface_force(int body, const World<D>& world, const Kernel<D>& ker
     const Vec<D> n = element[w] / area;
     double sum_w = 0, sum_depth = 0;
     Vec<D> sum_v = Vec<D>::Zero();
-    cells.around(x[w], [&](std::size_t f) {
+    cells.fluid.around(x[w], [&](std::size_t f) {
       const Vec<D> r = domain.offset(x[w], x[f]);  // from the wall particle to the fluid
       const double len = r.norm();
       if (len >= kernel.support()) return;
@@ -65,11 +93,9 @@ Vec<D> solid_surface_force(int body, const World<D>& world, const Kernel<D>& ker
       sum_v += W * v[f];
     });
     if (sum_w == 0) continue;  // dry: air on it (the tank's lid, a wall above the water)
-    const Vec<D> felt = acceleration.empty() ? gravity : Vec<D>(gravity - acceleration[w]);
-    force += (p[w] - q.rho0 * felt.dot(n) * 0.5 * q.spacing) * element[w];
     if (q.mps_viscous > 0) {
       if (kind[w] != kWall) continue;  // dummy particles take no part in MPS's viscous term
-      cells.around(x[w], [&](std::size_t f) {
+      cells.fluid.around(x[w], [&](std::size_t f) {
         const double len = domain.offset(x[w], x[f]).norm();
         if (len < kernel.support()) force += m[f] * q.mps_viscous * kernel.w(len) * (v[f] - v[w]);
       });

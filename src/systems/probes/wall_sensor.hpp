@@ -10,9 +10,9 @@
 // particles, whose pressure each method defines its own way (WCSPH's extrapolated dummies, MPS's
 // solved first layer, ISPH's Neumann or Shepard rows). The kernel is the sensor's, not the
 // method's: Wendland C2 with h = d (support 2 d, the two fluid rows beside the wall), so that MPS's
-// wide weight (r_e = 3.1 d) does not average the impact's peak over six rows. A face with no fluid
-// within the support reads 0 (air). In 2D the face is the segment of length `diameter` across the
-// normal, in 3D the disc, sampled at points at most d/4 apart.
+// wide weight (r_e = 3.1 d) does not average the impact's peak over six rows. A point of the face
+// that the fluid does not wet (below) reads 0 (air). In 2D the face is the segment of length `diameter`
+// across the normal, in 3D the disc, sampled at points at most d/4 apart.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -65,17 +65,29 @@ std::vector<Vec<D>> sensor_face_points(const WallSensor<D>& s, double spacing) {
   return points;
 }
 
-// The surface pressure p_s(x) (above); felt = g - a_w.
+// The fluid and the solid particles around the sensors' points, binned once per sample.
 template <int D>
-double surface_pressure_at(const Vec<D>& at, const World<D>& world, const FluidCells<D>& cells,
+struct SensorCells {
+  SensorCells(const World<D>& world, const Domain<D>& domain, double support)
+      : fluid(world, domain, support), solid(world, domain, support, true) {}
+  FluidCells<D> fluid, solid;
+};
+
+// The surface pressure p_s(x) (above); felt = g - a_w. A point is wet where the fluid fills at
+// least half of the support the walls leave, sum_f V_f W / (1 - sum_w V_w W) >= 1/2 (the
+// water_height probe's fill, probes.hpp), and reads 0 (air) elsewhere: above the water line the
+// hydrostatic carry would go on below zero (a plate holding back a resting tank read 0.4% of its
+// thrust less from the two elements above the water).
+template <int D>
+double surface_pressure_at(const Vec<D>& at, const World<D>& world, const SensorCells<D>& cells,
                            const Domain<D>& domain, const Kernel<D>& kernel, double rho0,
                            const Vec<D>& felt) {
   auto& x = world.column(components::position);
   auto& p = world.column(components::pressure);
   auto& m = world.column(components::mass);
   auto& rho = world.column(components::density);
-  double sum = 0, weight = 0;
-  cells.around(at, [&](std::size_t f) {
+  double sum = 0, weight = 0, solid = 0;
+  cells.fluid.around(at, [&](std::size_t f) {
     const Vec<D> r = domain.offset(x[f], at);  // from the fluid particle to the point
     const double len = r.norm();
     if (len >= kernel.support()) return;
@@ -83,7 +95,11 @@ double surface_pressure_at(const Vec<D>& at, const World<D>& world, const FluidC
     sum += w * (p[f] + rho0 * felt.dot(r));
     weight += w;
   });
-  return weight > 0 ? sum / weight : 0.0;
+  cells.solid.around(at, [&](std::size_t s) {
+    const double len = domain.offset(x[s], at).norm();
+    if (len < kernel.support()) solid += m[s] / rho[s] * kernel.w(len);
+  });
+  return weight >= 0.5 * (1 - std::min(solid, 1.0)) && weight > 0 ? sum / weight : 0.0;
 }
 
 // The wall particle nearest the sensor's centre (any kind but fluid and elastic), if one lies
@@ -141,7 +157,7 @@ SensorProblem wall_sensor_problem(const WallSensor<D>& s, const World<D>& world,
 
 // The sensor's reading: the mean of p_s over its face; felt = g - a_w of the nearest wall particle.
 template <int D>
-double wall_sensor_pressure(const WallSensor<D>& s, const World<D>& world, const FluidCells<D>& cells,
+double wall_sensor_pressure(const WallSensor<D>& s, const World<D>& world, const SensorCells<D>& cells,
                             const Domain<D>& domain, double spacing, double rho0, const Vec<D>& gravity) {
   Vec<D> felt = gravity;
   if (world.has(components::body_acceleration.name))
