@@ -200,11 +200,11 @@ std::vector<double> sample_probes(const std::vector<Probe>& probes, const World<
       // reaction to its laminar pair term (WCSPH), or on the first wall layer (MPS, ISPH).
       const SurfaceForceParameters surface{d, rho0, context.viscosity, context.wall_layer_viscous};
       Vec<D> force = Vec<D>::Zero();
-      if (context.solid_force == SolidForceReading::PairReaction)
-        force = solid_pressure_force<D>(probe.solid, world, force_cells(world, kernel, domain, d), domain,
-                                        gravity, surface) +
-                solid_force<D>(probe.solid, world, kernel, domain, /*with_pressure=*/false);
-      else
+      if (context.solid_force == SolidForceReading::PairReaction) {
+        const SensorCells<D> cells = force_cells(world, kernel, domain, d);
+        force = solid_pressure_force<D>(probe.solid, world, cells, domain, gravity, surface) +
+                solid_force<D>(probe.solid, world, kernel, domain, cells.fluid, /*with_pressure=*/false);
+      } else
         force = solid_surface_force<D>(probe.solid, world, kernel, domain, gravity, surface);
       out.push_back(force[probe.axis]);
     } else if (probe.type == "solid_displacement" || probe.type == "solid_stress") {

@@ -21,7 +21,7 @@ namespace ryushi {
 
 template <int D>
 Vec<D> solid_force(int body, const World<D>& world, const Kernel<D>& kernel, const Domain<D>& domain,
-                   bool with_pressure = true) {
+                   const FluidCells<D>& cells, bool with_pressure = true) {
   auto& x = world.column(components::position);
   auto& owner = world.column(components::body);
   auto& m = world.column(components::mass);
@@ -33,7 +33,7 @@ Vec<D> solid_force(int body, const World<D>& world, const Kernel<D>& kernel, con
   std::span<const Vec<D>> ghost;
   if (viscous) mu = world.column(components::viscosity), ghost = world.column(components::wall_velocity);
   const double support = kernel.support(), eta2 = 0.01 * kernel.h() * kernel.h();
-  const FluidCells<D> cells(world, domain, support);
+  // cells: the fluid binned at least a support wide (the force probe shares the sensors').
   const bool periodic = domain.any_periodic();
   Vec<D> force = Vec<D>::Zero();
   for (std::size_t w = 0; w < world.size(); ++w) {

@@ -163,9 +163,18 @@ template <int D>
 double wall_sensor_pressure(const WallSensor<D>& s, const World<D>& world, const SensorCells<D>& cells,
                             const Domain<D>& domain, double spacing, double rho0, const Vec<D>& gravity) {
   Vec<D> felt = gravity;
-  if (world.has(components::body_acceleration.name))
-    if (auto w = nearest_wall_particle(s.centre, world, domain, 2 * spacing))
-      felt -= world.column(components::body_acceleration)[*w];
+  if (world.has(components::body_acceleration.name)) {
+    // The nearest wall particle within 2 d, from the cells (every sample: no scan of the world).
+    auto& x = world.column(components::position);
+    auto& kind = world.column(components::kind);
+    std::optional<std::size_t> nearest;
+    double best2 = 4 * spacing * spacing;
+    cells.solid.around(s.centre, [&](std::size_t w) {
+      const double r2 = domain.offset(x[w], s.centre).squaredNorm();
+      if (kind[w] != kElastic && r2 < best2) best2 = r2, nearest = w;
+    });
+    if (nearest) felt -= world.column(components::body_acceleration)[*nearest];
+  }
   const Kernel<D> kernel = sensor_kernel<D>(spacing);
   const auto points = sensor_face_points(s, spacing);
   double sum = 0;
