@@ -1,7 +1,8 @@
 // The dam break of Lobovsky et al. (2014), H = 300 mm, onto a wall with pressure sensors
 // (scenes/dam_break_lobovsky_2d.toml, issue 57; docs/validation.md, "Impact pressure"), coarse:
-// H / d = 20, every method in its scene table. What holds is asserted; the first impact's peak,
-// which none of the three gets inside the experiment's band yet, is a known failure.
+// H / d = 20, every method in its scene table, and WCSPH with the Riemann dissipation. What holds
+// is asserted; the first impact's peak, which only WCSPH with the Riemann dissipation gets near the
+// experiment's band, is a known failure for the others.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -48,16 +49,22 @@ std::map<int, std::pair<double, double>> experiment_peak_bands() {
 // Measured at H / d = 20 (2026-11-29): the first peak at the 15 mm sensor 9.5 (WCSPH), 16.1
 // (ISPH), 4.6 (MPS) rho g H against the experiment's 1.82-2.16; at H / d = 40 17.5, 3.4, 3.6 and
 // at 80 (docs/validation.md). WCSPH's is the acoustic compression of the one-particle tongue
-// against the wall (rho c0 U), ISPH's and MPS's the projection stopping a particle within a step.
+// against the wall (rho c0 U) after the artificial viscosity has slowed and thickened it, ISPH's
+// and MPS's the projection stopping a particle within a step. WCSPH with the Riemann dissipation
+// (its limiter damps the impact, not the tongue's shear): 2.37 at 15 mm and 1.81 at 30 mm (band
+// 1.36-1.69), asserted within 20% of the band at this resolution (a sensor is 0.28 spacings).
 TEST_CASE(
     "impact: Lobovsky's dam break, sensors dry until the water arrives, ordered by height in the run-up "
-    "(the first peak known to overshoot the experiment)") {
+    "(the first peak: WCSPH's Riemann dissipation near the experiment's band, the others known to "
+    "overshoot)") {
   const auto bands = experiment_peak_bands();
   REQUIRE(bands.size() == 4);
   const double H = 0.3, g = 9.81, rho_g_H = 997 * g * H, T = std::sqrt(H / g), d = 0.015;
-  for (std::string method : {"wcsph", "isph", "mps"}) {
-    CAPTURE(method);
-    auto dir = test::unique_scratch("lobovsky_" + method);
+  for (std::string label : {"wcsph", "wcsph_riemann", "isph", "mps"}) {
+    CAPTURE(label);
+    const bool riemann = label == "wcsph_riemann";
+    const std::string method = riemann ? "wcsph" : label;
+    auto dir = test::unique_scratch("lobovsky_" + label);
     RunOptions opt;
     opt.scene = test::scene_path("dam_break_lobovsky_2d.toml");
     opt.out_dir = dir.string();
@@ -65,6 +72,7 @@ TEST_CASE(
     opt.sets = {"particles.spacing=" + std::to_string(d), "method.name=\"" + method + "\"",
                 "output.probe_interval=2.5e-4", "time.end=0.97"};  // t* = 5.5, before the run-up returns
     if (method == "isph") opt.sets.push_back("shifting.model=\"fickian\"");
+    if (riemann) opt.sets.push_back("method.wcsph.dissipation=\"riemann\"");
     REQUIRE(run_scene(opt) == kExitDone);
     auto probes = test::read_csv(dir / "probes.csv");
     const auto& t = probes["time"];
@@ -89,12 +97,18 @@ TEST_CASE(
       }
       std::nth_element(run_up.begin(), run_up.begin() + run_up.size() / 2, run_up.end());
       median_run_up[name] = run_up[run_up.size() / 2];
-      const double top = bands.at(z).second / (rho_g_H / 100);  // mbar -> rho g H
-      MESSAGE(method, " ", std::string(name), ": arrival t* ", t[arrival] / T, ", first peak ", peak,
+      const double top = bands.at(z).second / (rho_g_H / 100),  // mbar -> rho g H
+          bottom = bands.at(z).first / (rho_g_H / 100);
+      MESSAGE(label, " ", std::string(name), ": arrival t* ", t[arrival] / T, ", first peak ", peak,
               " rho g H (experiment up to ", top, "), run-up median ", median_run_up[name] / rho_g_H);
       // The known failure (issue 57): the first peak at the 15 mm sensor more than 1.5 times the
       // experiment's 97.5%. When this fails, the field is right: make it the band.
-      if (z == 15) CHECK(peak > 1.5 * top);
+      if (riemann && (z == 15 || z == 30)) {
+        CHECK(peak > 0.8 * bottom);
+        CHECK(peak < 1.2 * top);
+      } else if (z == 15) {
+        CHECK(peak > 1.5 * top);
+      }
     }
     // The run-up is a layer of water standing on the wall's foot: its pressure falls with height.
     CHECK(median_run_up["sensor_1"] > median_run_up["sensor_3"]);

@@ -101,6 +101,10 @@ TEST_CASE("scene: wrong types, out-of-range and inconsistent values") {
         "bad.toml:17:9: [shifting] model = \"density\" is ISPH's (its beta, eqs. 19-25); wcsph takes none, fickian, optimised or xsph");
   CHECK(error_of(base + "[method]\nname = \"mps\"\n[shifting]\nmodel = \"fickian\"\n") ==
         "bad.toml:19:9: method mps has no particle shifting; leave [shifting] out");
+  CHECK(error_of(base + "[method]\ndissipation = \"riemann\"\nartificial_viscosity = 0.1\n") ==
+        "bad.toml:18:24: artificial_viscosity is read by dissipation = \"artificial_viscosity\" only; "
+        "\"riemann\" "
+        "takes its dissipation from the pair's Riemann problem (its one parameter is riemann_limiter)");
 }
 
 TEST_CASE("scene: --set overrides scalar keys and reports its own errors") {

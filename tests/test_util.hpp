@@ -17,8 +17,12 @@ namespace ryushi::test {
 
 namespace fs = std::filesystem;
 
-inline fs::path source_dir() { return RYUSHI_SOURCE_DIR; }
-inline std::string scene_path(const std::string& name) { return (source_dir() / "scenes" / name).string(); }
+inline fs::path source_dir() {
+  return RYUSHI_SOURCE_DIR;
+}
+inline std::string scene_path(const std::string& name) {
+  return (source_dir() / "scenes" / name).string();
+}
 
 // A fresh directory under the build tree, removed at construction.
 inline fs::path scratch(const std::string& name) {
@@ -56,6 +60,21 @@ inline void write_text(const fs::path& p, const std::string& text) {
   std::ofstream(p) << text;
 }
 
+// A WCSPH scene file's text with the Riemann dissipation in place of its artificial viscosity and
+// delta-SPH keys (which dissipation = "riemann" refuses): those lines dropped, the key added
+// after the method's name.
+inline std::string with_riemann_dissipation(const std::string& scene) {
+  std::istringstream in(scene);
+  std::string out, line;
+  while (std::getline(in, line)) {
+    const bool dropped = line.rfind("delta =", 0) == 0 || line.rfind("artificial_viscosity", 0) == 0;
+    if (!dropped) out += line + "\n";
+    if (line.rfind("name = \"wcsph\"", 0) == 0) out += "dissipation = \"riemann\"\n";
+  }
+  REQUIRE(out.find("dissipation = \"riemann\"") != std::string::npos);
+  return out;
+}
+
 // The head of a small 2D scene ([scene], [domain], [particles], [time]) that the bad-input tests
 // complete with the blocks under test.
 inline std::string small_scene_head() {
@@ -75,7 +94,8 @@ end = 0.1
 inline std::string block_scene(const std::string& fluid_min, const std::string& fluid_max, double end,
                                const std::string& extra = "") {
   return "[scene]\ndimension = 2\n[domain]\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\n[particles]\nspacing = 0.05\n"
-         "[time]\nend = " + std::to_string(end) + "\n[[fluid]]\nmin = " + fluid_min + "\nmax = " + fluid_max + "\n" + extra;
+         "[time]\nend = " +
+         std::to_string(end) + "\n[[fluid]]\nmin = " + fluid_min + "\nmax = " + fluid_max + "\n" + extra;
 }
 
 // Columns of a CSV with a header row. Asking for a column the file does not have, or one with no

@@ -17,8 +17,8 @@
 
 using namespace ryushi;
 
-
-TEST_CASE("validation: 2D dam break surge front follows Martin and Moyce, runs past the impact, keeps its volume") {
+TEST_CASE(
+    "validation: 2D dam break surge front follows Martin and Moyce, runs past the impact, keeps its volume") {
   auto out = test::scratch("dam_break_2d");
   // To T = 3.8: the front reaches the far wall (Z = 4) at T = 3.15; the asserted window ends at 2.5.
   const double a = 0.25, g = 9.81, T_end = 3.8;
@@ -92,8 +92,8 @@ TEST_CASE("validation: WCSPH dam break with Fickian shifting keeps the front and
   REQUIRE(run_scene(opt) == kExitDone);
   auto front = test::front_of(test::read_csv(out / "probes.csv"), a, t_scale);
   auto fit = test::fit_time_origin(front);
-  MESSAGE("with shifting, a/d = 20: unshifted front errors ", fit.unshifted, "| time-origin shift ", fit.shift,
-          " -> max error ", 100 * fit.error, "%");
+  MESSAGE("with shifting, a/d = 20: unshifted front errors ", fit.unshifted, "| time-origin shift ",
+          fit.shift, " -> max error ", 100 * fit.error, "%");
   CHECK(fit.error <= 0.03);
   CHECK(fit.unshifted_lead <= 0.20);
   auto frame = test::last_frame(out);
@@ -105,6 +105,29 @@ TEST_CASE("validation: WCSPH dam break with Fickian shifting keeps the front and
         closest = std::min(closest, std::hypot(x[3 * i] - x[3 * j], x[3 * i + 1] - x[3 * j + 1]));
   MESSAGE("closest fluid pair at the last frame: ", closest / d, " d");
   CHECK(closest >= 0.5 * d);
+}
+
+// WCSPH with the Riemann dissipation (issue 57; docs/wcsph.md): the same dam break at a/d = 20 to
+// T = 2.6 keeps the front criterion. Asserted as above.
+TEST_CASE("validation: WCSPH dam break with the Riemann dissipation keeps the front criterion") {
+  auto out = test::scratch("dam_break_2d_riemann");
+  const double a = 0.25, g = 9.81;
+  const double t_scale = std::sqrt(a / (2 * g));
+  test::write_text(out / "dam_break.toml",
+                   test::with_riemann_dissipation(test::read_text(test::scene_path("dam_break_2d.toml"))));
+  RunOptions opt;
+  opt.scene = (out / "dam_break.toml").string();
+  opt.out_dir = (out / "run").string();
+  opt.quiet = true;
+  opt.end_time = 2.6 * t_scale;
+  opt.sets = {"particles.spacing=0.0125", "output.interval=0.25", "output.probe_interval=0.002"};
+  REQUIRE(run_scene(opt) == kExitDone);
+  auto front = test::front_of(test::read_csv(out / "run" / "probes.csv"), a, t_scale);
+  auto fit = test::fit_time_origin(front);
+  MESSAGE("riemann, a/d = 20: unshifted front errors ", fit.unshifted, "| time-origin shift ", fit.shift,
+          " -> max error ", 100 * fit.error, "%");
+  CHECK(fit.error <= 0.03);
+  CHECK(fit.unshifted_lead <= 0.20);
 }
 
 // The 3D tank is one column wide (0.25 m) between two walls: the flow is the 2D one except in the
@@ -170,7 +193,8 @@ TEST_CASE("validation: 3D dam break front meets the criterion, follows the 2D fr
 // quoted a/d = 40 figures, WCSPH 0.03, MPS 0.12, ISPH 0.12). Later marks (H = 4/9 .. 1/9) and the
 // front (the data start at Z = 6, a sheet a tenth of a thick) are reported, not asserted:
 // docs/validation.md, "The square column".
-TEST_CASE("validation: the square column drains at the back wall as Martin and Moyce measured, every method") {
+TEST_CASE(
+    "validation: the square column drains at the back wall as Martin and Moyce measured, every method") {
   const double a = 0.25, g = 9.81;
   const double t_scale = std::sqrt(a / g);  // T = t sqrt(g/a) for n^2 = 1
   std::vector<test::FrontPoint> marks;      // (T, H) of the experiment
@@ -185,7 +209,7 @@ TEST_CASE("validation: the square column drains at the back wall as Martin and M
     opt.quiet = true;
     opt.end_time = 2.6 * t_scale;
     opt.sets = {"particles.spacing=0.0125", "fluid.0.max=[0.25, 0.25]", "wall.0.max=[3.75, 1.0]",
-                "domain.max=[3.85, 3.0]", "output.interval=0.1", "output.probe_interval=0.002"};
+                "domain.max=[3.85, 3.0]",   "output.interval=0.1",      "output.probe_interval=0.002"};
     REQUIRE(run_scene(opt) == kExitDone);
     auto probes = test::read_csv(out / "probes.csv");
     const auto& t = probes["time"];
@@ -196,9 +220,12 @@ TEST_CASE("validation: the square column drains at the back wall as Martin and M
       // The first time the height falls to the mark (linear between samples).
       double crossed = NAN;
       for (std::size_t k = 1; k < t.size() && std::isnan(crossed); ++k)
-        if (h[k] / a <= m.Z) crossed = (t[k - 1] + (t[k] - t[k - 1]) * (h[k - 1] / a - m.Z) / ((h[k - 1] - h[k]) / a)) / t_scale;
-      REQUIRE_MESSAGE(!std::isnan(crossed), scene << ": the water at the back wall never fell to H = " << m.Z);
-      report += "H = " + std::to_string(m.Z) + " at T = " + std::to_string(crossed) + " (" + std::to_string(m.T) + "); ";
+        if (h[k] / a <= m.Z)
+          crossed = (t[k - 1] + (t[k] - t[k - 1]) * (h[k - 1] / a - m.Z) / ((h[k - 1] - h[k]) / a)) / t_scale;
+      REQUIRE_MESSAGE(!std::isnan(crossed),
+                      scene << ": the water at the back wall never fell to H = " << m.Z);
+      report += "H = " + std::to_string(m.Z) + " at T = " + std::to_string(crossed) + " (" +
+                std::to_string(m.T) + "); ";
       worst = std::max(worst, std::abs(crossed - m.T));
     }
     MESSAGE(scene, ": ", report, "largest difference ", worst);

@@ -49,6 +49,8 @@ WcsphParameters<D> wcsph_parameters(const Scene& s) {
   p.delta = s.method_params.number("delta");
   p.alpha = s.method_params.number("artificial_viscosity");
   p.beta = s.method_params.number("artificial_viscosity_quadratic");
+  p.riemann = s.method_params.text("dissipation") == "riemann";
+  p.riemann_limiter = s.method_params.number("riemann_limiter");
   p.mu = s.viscosity;
   p.wall_no_slip = !s.method_params.flag("wall_slip");
   p.wall_acceleration =
@@ -105,6 +107,13 @@ void populate_world(const Scene& s, const WcsphParameters<D>& p, World<D>& world
       },
       [](int) { return kWall; });
   add_surface_elements(s, appended, world);  // the force probe's pressure integral
+  if (p.riemann) {  // the wall's Riemann state (momentum.hpp), in the order the walls were appended
+    auto& normal = world.ensure(components::wall_normal);
+    const auto& kind = world.column(components::kind);
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < world.size(); ++i)
+      if (kind[i] == kWall) normal[i] = appended.wall_normal[next++];
+  }
   if (s.models_heat()) add_thermal_state<D>(s, appended, world);
   if (!s.elastic.empty()) add_elastic_bodies<D>(s, p.rho0, world);
 }
@@ -149,7 +158,7 @@ std::vector<SystemPtr<D>> wcsph_pipeline(const Scene& s, const WcsphParameters<D
   auto stage = [&] {
     if (!has_fluid) return;
     if (walls) list.push_back(wall);
-    if (p.delta > 0) list.push_back(gradient);
+    if (p.density_diffusion()) list.push_back(gradient);
     if (rheology) list.push_back(rheology);
     list.push_back(forces);
     if (conduction) list.push_back(conduction);

@@ -23,6 +23,20 @@ std::vector<KeySpec> wcsph_keys() {
       non_negative("artificial_viscosity", "", "0.02",
                    "Monaghan artificial viscosity alpha (linear term, seed 002 eq. 23 'A')."),
       non_negative("artificial_viscosity_quadratic", "", "0.0", "Quadratic term beta ('B')."),
+      choice(
+          "dissipation", "\"artificial_viscosity\"",
+          "wcsph: the momentum equation's pair dissipation. artificial_viscosity: Monaghan's (the two keys "
+          "above); riemann: the pressure P* of the linearised acoustic Riemann problem between each pair "
+          "with "
+          "the low-dissipation limiter of Zhang, Hu & Adams (2017, J. Comput. Phys. 335), beta = min(eta "
+          "U / c0, 1) for an approach speed U, which damps impacts and hardly shears slow flow (a wall's "
+          "state is the fluid's mirror along its normal), and the continuity's density diffusion is the same "
+          "problem's, without its linear part (delta and the two artificial viscosity keys are refused "
+          "beside it; docs/wcsph.md).",
+          {"artificial_viscosity", "riemann"}),
+      ranged({"riemann_limiter", K::Float, "", "3.0",
+              "wcsph with dissipation = \"riemann\": eta of the limiter (Zhang, Hu & Adams use 3)."},
+             0.0, 100.0),
       non_negative("solid_artificial_viscosity", "", "1.0",
                    "wcsph with [[elastic]]: A of the solid's artificial viscosity (seed 002 eq. 23; the seed "
                    "uses 1)."),
@@ -85,6 +99,14 @@ void resolve(Scene& sc, const toml::table& root, Validator& val) {
     val.fail(root["method"]["solid_walls"].node(), "method.solid_walls",
              "solid_walls = \"seed\" (seed 002 eq. 28) is for solid_formulation = \"updated\": the total "
              "Lagrangian form's sums run over the rest configuration, where walls have no place");
+  if (params.text("dissipation") == "riemann")
+    for (const char* key : {"artificial_viscosity", "artificial_viscosity_quadratic", "delta"})
+      if (params.given(key))
+        val.fail(
+            root["method"][key].node(), std::string("method.") + key,
+            std::string(key) +
+                " is read by dissipation = \"artificial_viscosity\" only; \"riemann\" takes "
+                "its dissipation from the pair's Riemann problem (its one parameter is riemann_limiter)");
   if (root["shifting"]["model"].value_or(std::string()) == "density")
     val.fail(root["shifting"]["model"].node(), "shifting.model",
              "[shifting] model = \"density\" is ISPH's (its beta, eqs. 19-25); wcsph takes none, fickian, "

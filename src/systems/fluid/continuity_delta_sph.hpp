@@ -8,6 +8,12 @@
 // conserving. (The seed prints a difference; with x_ij = x_i - x_j the sum is what follows
 // from Marrone et al. 2011.) Diffusion acts between fluid particles only; walls enter the
 // divergence term with their own (prescribed) velocity.
+// With the Riemann dissipation (wcsph_parameters.hpp) the diffusion is that of the same pair's
+// Riemann problem: its interface velocity U* = (U_L + U_R)/2 + (p_i - p_j) / (2 rho0 c0) in
+// drho_i/dt = 2 rho_i sum_j V_j (v_i - v*) . grad_i W_ij adds rho_i/(rho0 c0) sum_j V_j (p_i - p_j)
+// r F ~ c0 sum_j V_j (rho_i - rho_j) r F (Zhang, Hu & Adams 2017): delta-SPH's pair with delta h
+// replaced by r/2. It is taken with delta-SPH's linear part removed (their form diffuses a
+// resting column's density at its free surface, where ryushi has no density summation).
 #include <cstdint>
 #include <span>
 
@@ -30,7 +36,8 @@ struct ContinuityDeltaSph {
   std::span<const Vec<D>> grad;    // the renormalised density gradient (Diffusion only)
   std::span<const std::int32_t> kind;
   std::span<double> density_rate;
-  double diffusion;  // delta h c0
+  double diffusion;     // delta h c0, or c0 with riemann_weight
+  bool riemann_weight;  // each pair's psi weighted by r/2 (the Riemann problem's diffusion)
 
   struct Row {  // row i's values, read once per row
     double V, rho;
@@ -53,7 +60,8 @@ struct ContinuityDeltaSph {
       if (ri.fluid && kind[g.j] == kFluid) {
         // (x_j - x_i) . grad_i W_ij / r^2 = -F exactly, so no division per pair; antisymmetric:
         // what i gains, j loses (weighted by V).
-        const double psi = -2.0 * (rho[g.j] - ri.rho) * g.F - (ri.grad + grad[g.j]).dot(g.gradW);
+        double psi = -2.0 * (rho[g.j] - ri.rho) * g.F - (ri.grad + grad[g.j]).dot(g.gradW);
+        if (riemann_weight) psi *= 0.5 * g.r;
         if (s.i) to_i.diffusive += V[g.j] * psi;
         if (s.j) to_j.diffusive -= ri.V * psi;
       }

@@ -30,7 +30,8 @@ class WcsphPairForces final : public System<D> {
     return Io{reads(components::position, components::velocity, components::density, components::pressure,
                     components::mass, components::kind, neighbours_resource),
               writes(components::density_rate, components::acceleration),
-              optional(p_.delta > 0, reads(components::density_gradient)),
+              optional(p_.density_diffusion(), reads(components::density_gradient)),
+              optional(p_.riemann, reads(components::wall_normal)),
               optional(p_.viscous(), reads(components::viscosity, components::wall_velocity))};
   }
   Access access() const override { return io().access(); }
@@ -40,15 +41,15 @@ class WcsphPairForces final : public System<D> {
     std::fill(mu.begin(), mu.end(), p_.mu);
   }
   void run(SystemContext<D>& ctx) override {
-    auto [x, v, rho, p, m, kind, nl, drho, a, grad, mu, vw] = io().fetch(ctx);
+    auto [x, v, rho, p, m, kind, nl, drho, a, grad, normal, mu, vw] = io().fetch(ctx);
     particle_volumes(m, rho, volume_);
     inverse_densities(rho, inv_rho_);
     const typename PairLoop<D>::Inputs in{x, v, kind, kFluid, x.size()};
     const double h = p_.kernel.h();
-    const PressureArtificialViscosity<D> pressure{p_, p, rho, inv_rho_, m, a};
-    with_flag(p_.delta > 0, [&](auto Diffusion) {
-      const ContinuityDeltaSph<D, Diffusion.value> continuity{volume_, rho,  grad,
-                                                              kind,    drho, p_.delta * h * p_.c0};
+    const PressureArtificialViscosity<D> pressure{p_, p, rho, inv_rho_, m, kind, normal, a};
+    with_flag(p_.density_diffusion(), [&](auto Diffusion) {
+      const ContinuityDeltaSph<D, Diffusion.value> continuity{
+          volume_, rho, grad, kind, drho, p_.riemann ? p_.c0 : p_.delta * h * p_.c0, p_.riemann};
       if (p_.viscous())
         loop_.run(in, nl, continuity, pressure,
                   LaminarViscosityMorris<D>{v, vw, mu, inv_rho_, m, kind, a, 0.01 * h * h, p_.wall_no_slip});
