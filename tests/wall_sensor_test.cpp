@@ -1,6 +1,8 @@
 // Wall pressure sensors and the force on a body read one surface pressure (issue 57,
 // src/systems/probes/wall_sensor.hpp, solid_surface_force.hpp): a plate holding back a resting
 // tank, for every method, and a dam break pushing on an obstacle.
+#include "systems/probes/wall_sensor.hpp"
+
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -195,4 +197,37 @@ TEST_CASE("solid: a dam break pushes on an obstacle from when its front arrives"
     CHECK(inside == 0);
   }
   REQUIRE_MESSAGE(k == 21, k << " frames checked");  // t = 0 to 0.4 s every 0.02 s: none skipped
+}
+
+// MPS's density column is its Poisson source density rho0 n* / n0, which is 0 for a lone
+// particle with no neighbour (a splash): its volume m / rho was infinite and the sensor read
+// inf / inf = NaN (a 3D dam break onto a column under MPS: 45 NaN samples of the force). Such a
+// particle has no volume to weigh: the sensor reads what the other particles give.
+TEST_CASE("wall sensor: a particle without density (MPS's lone splash) does not make the reading NaN") {
+  const double d = 0.01, rho0 = 1000;
+  World<2> world;
+  auto add = [&](Vec<2> x, std::int32_t kind, double rho, double p) {
+    const std::size_t k = world.append(1, kind);
+    world.ensure(components::position)[k] = x;
+    world.ensure(components::density)[k] = rho;
+    world.ensure(components::mass)[k] = rho0 * d * d;
+    world.ensure(components::pressure)[k] = p;
+  };
+  for (int i = -3; i < 4; ++i)
+    for (int layer = 0; layer < 3; ++layer) add(Vec<2>((i + 0.5) * d, -(layer + 0.5) * d), kWall, rho0, 0);
+  for (int i = -3; i < 4; ++i)
+    for (int row = 0; row < 3; ++row) add(Vec<2>((i + 0.5) * d, (row + 0.5) * d), kFluid, rho0, 100.0);
+  Domain<2> domain;
+  domain.min = Vec<2>(-0.1, -0.1);
+  domain.max = Vec<2>(0.1, 0.1);
+  const Kernel<2> kernel = sensor_kernel<2>(d);
+  const Vec<2> at(0, 0), felt = Vec<2>::Zero();
+  const double dry_of_it = surface_pressure_at<2>(at, world, SensorCells<2>(world, domain, kernel.support()),
+                                                  domain, kernel, rho0, felt);
+  CHECK(dry_of_it == doctest::Approx(100.0));   // a uniform 100 Pa without gravity
+  add(Vec<2>(0.002, 0.004), kFluid, 0.0, 0.0);  // the lone particle, inside the sensor's support
+  const double with_it = surface_pressure_at<2>(at, world, SensorCells<2>(world, domain, kernel.support()),
+                                                domain, kernel, rho0, felt);
+  CHECK(std::isfinite(with_it));
+  CHECK(with_it == doctest::Approx(100.0));
 }

@@ -155,7 +155,7 @@ std::vector<double> sample_probes(const std::vector<Probe>& probes, const World<
           [&](std::size_t i, auto& acc) {
             if (kind[i] != kFluid) return;
             const double r2 = (x[i] - at).squaredNorm();
-            if (r2 >= support2) return;
+            if (r2 >= support2 || !(rho[i] > 0)) return;  // MPS: a lone particle's rho0 n* / n0 is 0
             double w = kernel.w(std::sqrt(r2)) * m[i] / rho[i];
             acc.first += p[i] * w;
             acc.second += w;

@@ -93,14 +93,16 @@ double surface_pressure_at(const Vec<D>& at, const World<D>& world, const Sensor
   cells.fluid.around(at, [&](std::size_t f) {
     const Vec<D> r = domain.offset(x[f], at);  // from the fluid particle to the point
     const double len = r.norm();
-    if (len >= kernel.support()) return;
+    // MPS's density column is its source density rho0 n* / n0: 0 for a lone splash particle,
+    // which has no volume to weigh (its m / rho made a 3D column's force NaN at 45 samples).
+    if (len >= kernel.support() || !(rho[f] > 0)) return;
     const double w = m[f] / rho[f] * kernel.w(len);
     sum += w * (p[f] + rho0 * felt.dot(r));
     weight += w;
   });
   cells.solid.around(at, [&](std::size_t s) {
     const double len = domain.offset(x[s], at).norm();
-    if (len < kernel.support()) solid += m[s] / rho[s] * kernel.w(len);
+    if (len < kernel.support() && rho[s] > 0) solid += m[s] / rho[s] * kernel.w(len);
   });
   return weight >= 0.25 * (1 - std::min(solid, 1.0)) && weight > 0 ? sum / weight : 0.0;
 }
