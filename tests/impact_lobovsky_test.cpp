@@ -51,8 +51,9 @@ std::map<int, std::pair<double, double>> experiment_peak_bands() {
 // at 80 (docs/validation.md). WCSPH's is the acoustic compression of the one-particle tongue
 // against the wall (rho c0 U) after the artificial viscosity has slowed and thickened it, ISPH's
 // and MPS's the projection stopping a particle within a step. WCSPH with the Riemann dissipation
-// (its limiter damps the impact, not the tongue's shear): 2.37 at 15 mm and 1.81 at 30 mm (band
-// 1.36-1.69), asserted within 20% of the band at this resolution (a sensor is 0.28 spacings).
+// (its limiter damps the impact, not the tongue's shear): 2.51 at 15 mm and 1.53 at 30 mm (bands
+// 1.82-2.16 and 1.36-1.69), asserted within 25% of the band at this resolution: the experiment's
+// own runs spread by +-9% about their median, and one run's first peak moves by round-off.
 TEST_CASE(
     "impact: Lobovsky's dam break, sensors dry until the water arrives, ordered by height in the run-up "
     "(the first peak: WCSPH's Riemann dissipation near the experiment's band, the others known to "
@@ -104,8 +105,8 @@ TEST_CASE(
       // The known failure (issue 57): the first peak at the 15 mm sensor more than 1.5 times the
       // experiment's 97.5%. When this fails, the field is right: make it the band.
       if (riemann && (z == 15 || z == 30)) {
-        CHECK(peak > 0.8 * bottom);
-        CHECK(peak < 1.2 * top);
+        CHECK(peak > 0.75 * bottom);
+        CHECK(peak < 1.25 * top);
       } else if (z == 15) {
         CHECK(peak > 1.5 * top);
       }

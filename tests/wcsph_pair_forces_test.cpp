@@ -96,8 +96,9 @@ void direct_evaluation(const World<D>& w, const WcsphParameters<D>& p, std::vect
       double Pi = 0;
       if (p.riemann) {
         // Zhang, Hu & Adams: 2 P* / (rho_i rho_j) with P* = (p_i + p_j)/2 + beta rho0 c0 U / 2; U
-        // the approach speed along the pair, or against a wall twice the normal one (its mirror).
-        const double U = fluid_j ? -vij.dot(xij) / r : 2.0 * vij.dot(normal[j]);
+        // the approach speed along the pair, or against a wall twice the normal one (its mirror),
+        // at most twice the speed along the pair.
+        const double U = fluid_j ? -vij.dot(xij) / r : 2.0 * std::min(vij.dot(normal[j]), -vij.dot(xij) / r);
         if (U > 0) Pi = std::min(p.riemann_limiter * U / p.c0, 1.0) * p.rho0 * p.c0 * U / (rho[i] * rho[j]);
       } else if (vij.dot(xij) < 0) {
         const double mu_ij = h * vij.dot(xij) / (r * r + eta2);

@@ -32,8 +32,9 @@ struct PressureArtificialViscosity {
 
   double approach(const PairGeometry<D>& g, const Row& ri) const {
     if (!p.riemann) return 0;
-    if (ri.wall) return WcsphParameters<D>::riemann_wall_approach(-g.vij, wall_normal[g.i]);
-    if (kind[g.j] == kWall) return WcsphParameters<D>::riemann_wall_approach(g.vij, wall_normal[g.j]);
+    if (ri.wall) return WcsphParameters<D>::riemann_wall_approach(-g.vij, -g.xij, g.r, wall_normal[g.i]);
+    if (kind[g.j] == kWall)
+      return WcsphParameters<D>::riemann_wall_approach(g.vij, g.xij, g.r, wall_normal[g.j]);
     return WcsphParameters<D>::riemann_approach(g.vij, g.xij, g.r);
   }
 
