@@ -107,13 +107,7 @@ void populate_isph_world(const Scene& s, const IsphParameters<D>& p, World<D>& w
         return std::pair{p.rho0, !std::isnan(given) ? given : s.method_params.flag("hydrostatic_init") ? p.rho0 * g_up * depth : 0.0};
       },
       [](int) { return kWall; }, [&](int layer) { return layer == 1 || p.wall_adami; }, !p.wall_adami);
-  // The normals of the kept wall particles (layer 1, or all with Adami rows), in the order they
-  // were appended.
-  auto& normal = world.ensure(components::wall_normal);
-  auto& kind = world.column(components::kind);
-  std::size_t next = 0;
-  for (std::size_t i = 0; i < world.size(); ++i)
-    if (kind[i] == kWall) normal[i] = appended.wall_normal[next++];
+  add_wall_normals(appended, world);  // of the kept wall particles (layer 1, or all with Adami rows)
   add_surface_elements(s, appended, world);
   if (s.method_params.flag("confined")) {  // read by the pressure rows; no system writes them
     world.ensure(components::free_surface);
@@ -122,6 +116,7 @@ void populate_isph_world(const Scene& s, const IsphParameters<D>& p, World<D>& w
   if (!p.fixed_pressure) return;
   // [[fixed_pressure]]: the fluid particles inside a box hold p = pressure + gradient . x.
   auto& fixed = world.ensure(components::fixed_pressure);
+  auto& kind = world.column(components::kind);
   auto& x = world.column(components::position);
   auto& pressure = world.column(components::pressure);
   for (std::size_t i = 0; i < world.size(); ++i) {

@@ -114,6 +114,16 @@ SceneParticles<D> append_scene_particles(
   return particles;
 }
 
+// Each wall particle's unit normal out of the fluid (wall_normal), for the systems that read a
+// wall's orientation (ISPH's wall rows, WCSPH's Riemann wall state). `appended`: what
+// append_scene_particles returned, its walls the world's last particles.
+template <int D>
+void add_wall_normals(const SceneParticles<D>& appended, World<D>& world) {
+  auto& normal = world.ensure(components::wall_normal);
+  const std::size_t first = world.size() - appended.wall.size();
+  for (std::size_t k = 0; k < appended.wall.size(); ++k) normal[first + k] = appended.wall_normal[k];
+}
+
 // For a scene with a `force` probe: each body particle's surface element, area times the unit normal into the
 // body (zero elsewhere), for the pressure integral of solid_surface_force.hpp. `appended`: what
 // append_scene_particles returned, its walls the world's last particles.

@@ -106,14 +106,8 @@ void populate_world(const Scene& s, const WcsphParameters<D>& p, World<D>& world
         return std::pair{rho, p.pressure(rho)};
       },
       [](int) { return kWall; });
-  add_surface_elements(s, appended, world);  // the force probe's pressure integral
-  if (p.riemann) {  // the wall's Riemann state (momentum.hpp), in the order the walls were appended
-    auto& normal = world.ensure(components::wall_normal);
-    const auto& kind = world.column(components::kind);
-    std::size_t next = 0;
-    for (std::size_t i = 0; i < world.size(); ++i)
-      if (kind[i] == kWall) normal[i] = appended.wall_normal[next++];
-  }
+  add_surface_elements(s, appended, world);          // the force probe's pressure integral
+  if (p.riemann) add_wall_normals(appended, world);  // the wall's Riemann state (momentum.hpp)
   if (s.models_heat()) add_thermal_state<D>(s, appended, world);
   if (!s.elastic.empty()) add_elastic_bodies<D>(s, p.rho0, world);
 }

@@ -27,8 +27,8 @@ std::vector<KeySpec> wcsph_keys() {
           "dissipation", "\"artificial_viscosity\"",
           "wcsph: the momentum equation's pair dissipation. artificial_viscosity: Monaghan's (the two keys "
           "above); riemann: the pressure P* of the linearised acoustic Riemann problem between each pair "
-          "with "
-          "the low-dissipation limiter of Zhang, Hu & Adams (2017, J. Comput. Phys. 335), beta = min(eta "
+          "with the low-dissipation limiter of Zhang, Hu & Adams (2017, J. Comput. Phys. 335), beta = "
+          "min(eta "
           "U / c0, 1) for an approach speed U, which damps impacts and hardly shears slow flow (a wall's "
           "state is the fluid's mirror along its normal), and the continuity's density diffusion is the same "
           "problem's, without its linear part (delta and the two artificial viscosity keys are refused "

@@ -44,9 +44,10 @@ class FluidOnSolid final : public System<D> {
         if (r2 >= support2) continue;
         const double F = p_.kernel.grad_factor(std::sqrt(r2));
         const double inv_rho_ij = 1.0 / (rho[i] * rho[j]), inv_r2_eta2 = 1.0 / (r2 + eta2);
-        const double coeff = p_.pair_pressure_coefficient(
-            p[i], p[j], rho[i], rho[j], inv_rho_ij, (v[i] - v[j]).dot(xij), inv_r2_eta2,
-            WcsphParameters<D>::riemann_approach(v[i] - v[j], xij, std::sqrt(r2)));
+        const double approach =  // read by the Riemann dissipation only
+            p_.riemann ? WcsphParameters<D>::riemann_approach(v[i] - v[j], xij, std::sqrt(r2)) : 0.0;
+        const double coeff = p_.pair_pressure_coefficient(p[i], p[j], rho[i], rho[j], inv_rho_ij,
+                                                          (v[i] - v[j]).dot(xij), inv_r2_eta2, approach);
         force -= m[i] * m[j] * coeff * F * xij;
         if (viscous)
           force += (m[i] * m[j] * 2.0 * mu[i] * inv_rho_ij * r2 * F * inv_r2_eta2) * (v[i] - ghost[j]);
