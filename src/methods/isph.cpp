@@ -22,13 +22,14 @@
 #include "methods/method.hpp"
 #include "methods/scene_particles.hpp"
 #include "systems/fluid/pair_collision.hpp"
+#include "systems/integrate/velocity_time_step.hpp"
 #include "systems/isph/fixed_pressure_velocity.hpp"
+#include "systems/isph/implicit_density_solve.hpp"
 #include "systems/isph/isph_parameters.hpp"
 #include "systems/isph/isph_predictor.hpp"
 #include "systems/isph/isph_pressure_correction.hpp"
 #include "systems/isph/isph_pressure_equation.hpp"
 #include "systems/isph/isph_wall_guard.hpp"
-#include "systems/integrate/velocity_time_step.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
 #include "systems/neighbour/support_filter.hpp"
 #include "systems/pressure/linear_solve.hpp"
@@ -74,6 +75,7 @@ IsphParameters<D> isph_parameters(const Scene& s) {
   p.wall_shepard = mp.text("wall_rows") == "shepard" || mp.text("wall_rows") == "shepard_hydrostatic";
   p.wall_shepard_hydrostatic = mp.text("wall_rows") == "shepard_hydrostatic";
   p.wall_adami = mp.text("wall_rows") == "adami";
+  p.implicit_density = mp.text("formulation") == "implicit_density";
   p.wall_acceleration = std::any_of(s.solids.begin(), s.solids.end(), [](const SolidSpec& b) { return b.moves(); });
   p.fixed_pressure = !s.fixed_pressure.empty();
   p.cfl = s.cfl;
@@ -106,7 +108,8 @@ void populate_isph_world(const Scene& s, const IsphParameters<D>& p, World<D>& w
       [&](double depth, double given) {
         return std::pair{p.rho0, !std::isnan(given) ? given : s.method_params.flag("hydrostatic_init") ? p.rho0 * g_up * depth : 0.0};
       },
-      [](int) { return kWall; }, [&](int layer) { return layer == 1 || p.wall_adami; }, !p.wall_adami);
+      [](int) { return kWall; }, [&](int layer) { return layer == 1 || p.wall_adami || p.implicit_density; },
+      !p.wall_adami && !p.implicit_density);
   add_wall_normals(appended, world);  // of the kept wall particles (layer 1, or all with Adami rows)
   add_surface_elements(s, appended, world);
   if (s.method_params.flag("confined")) {  // read by the pressure rows; no system writes them
@@ -133,6 +136,29 @@ void populate_isph_world(const Scene& s, const IsphParameters<D>& p, World<D>& w
   }
 }
 
+// formulation = "implicit_density": after the predictor, the density solve at x* corrects v and x;
+// no free-surface detection, no shifting.
+template <int D>
+std::vector<SystemPtr<D>> implicit_density_pipeline(const Scene& s, const IsphParameters<D>& p,
+                                                    std::vector<SystemPtr<D>> list) {
+  list.push_back(std::make_shared<SupportFilter<D>>(p.kernel.support()));
+  ImplicitDensitySettings settings;
+  settings.tolerance = s.method_params.number("density_tolerance");
+  settings.relaxation = s.method_params.given("density_relaxation")
+                            ? s.method_params.number("density_relaxation")
+                        : D == 2 ? 0.5
+                                 : 0.25;
+  list.push_back(std::make_shared<ImplicitDensitySolve<D>>(p, settings));
+  const double collision = s.method_params.number("collision_distance");
+  if (collision > 0)
+    list.push_back(std::make_shared<PairCollision<D>>(PairCollisionParameters{
+        "isph_collision", collision * p.spacing, 0.0, s.method_params.number("collision_restitution"),
+        s.method_params.text("collision_approach") == "beyond_resolved_flow"}));
+  list.push_back(std::make_shared<IsphWallGuard<D>>(p.domain, 0.5 * p.spacing, p.spacing));
+  if (s.fixed_dt <= 0) list.push_back(std::make_shared<VelocityTimeStep<D>>(isph_time_step<D>(p)));
+  return list;
+}
+
 template <int D>
 std::vector<SystemPtr<D>> isph_pipeline(const Scene& s, const IsphParameters<D>& p) {
   MethodContext<D> context = method_context<D>(s, p.kernel);
@@ -142,6 +168,7 @@ std::vector<SystemPtr<D>> isph_pipeline(const Scene& s, const IsphParameters<D>&
       std::make_shared<NeighbourSearch<D>>(p.search_radius(), kDummy, s.neighbour_skin * s.spacing, false),
       std::make_shared<IsphPredictor<D>>(p),
   };
+  if (p.implicit_density) return implicit_density_pipeline<D>(s, p, std::move(list));
   // The list holds the step's motion; from x* on only the pairs within the support count.
   if (p.description != IsphDescription::Eulerian)
     list.push_back(std::make_shared<SupportFilter<D>>(p.kernel.support()));

@@ -124,12 +124,31 @@ std::vector<KeySpec> isph_keys() {
              "at a stagnation point) is left alone; where the surroundings cannot fit a gradient (a drop of a "
              "few particles) all of it (src/systems/fluid/pair_collision.hpp).",
              {"full", "beyond_resolved_flow"}),
+      choice("formulation", "\"projection\"",
+             "isph: what the pressure equation asks. projection: the paper's, a velocity divergence (with "
+             "the compression term) solved as a linear system at the [solver] settings, with the keys above. "
+             "implicit_density: each particle's kernel sum kept through the step, with SPH's symmetric pressure "
+             "force and its adjoint density change (after Ihmsen et al. 2014 and DFSPH), solved by relaxed "
+             "Jacobi with p >= 0 (no free-surface detection, no shifting, the wall layers that cover the "
+             "support with Adami's pressure; of the keys above only description and the collision keys "
+             "apply). Not yet stable in 3D (docs/isph.md, \"The implicit density formulation\").",
+             {"projection", "implicit_density"}),
+      ranged({"density_tolerance", K::Float, "", "1e-4",
+              "isph with formulation = \"implicit_density\": the solve stops when the mean density error left "
+              "over the fluid (either way where p > 0, compression where p = 0) is below this fraction of rho0."},
+             1e-8, 1e-2),
+      ranged({"density_relaxation", K::Float, "", "(0.5 in 2D, 0.25 in 3D)",
+              "isph with formulation = \"implicit_density\": omega of the relaxed Jacobi iteration. In 3D 0.5 "
+              "overshoots (a tank at rest with periodic sides: a pressure noise that grew until the solve "
+              "failed at t = 0.61 s; 0.25 holds it at 3-5e-5 sqrt(g H) to 1 s)."},
+             0.01, 1.0),
       wall_slip_key(),
       hydrostatic_init_key()};
 }
 
 bool one_wall_layer(const Scene& sc) {
-  return sc.method_params.text("wall_rows") != "adami";
+  return sc.method_params.text("wall_rows") != "adami" &&
+         sc.method_params.text("formulation") != "implicit_density";
 }
 
 void resolve(Scene& sc, const toml::table& root, Validator& val) {
@@ -177,6 +196,10 @@ void validate(const Scene& sc, const toml::table& root, Validator& val) {
           label + "moves, but method isph with description = \"eulerian\" keeps every particle in place");
     if (one_wall_layer(sc) && b.layers != 1) val.fail_entry(root, "solid", i, "layers", label + one_layer);
   }
+  if (eulerian && sc.method_params.text("formulation") == "implicit_density")
+    val.fail(root["method"]["formulation"].node(), "method.formulation",
+             "formulation = \"implicit_density\" moves the particles to hold their density; it has no eulerian "
+             "description (use formulation = \"projection\" for fixed particles)");
   // Particles that move would carry a fixed pressure away.
   for (std::size_t i = 0; i < sc.fixed_pressure.size() && !eulerian; ++i)
     val.fail_entry(root, "fixed_pressure", i, "min",

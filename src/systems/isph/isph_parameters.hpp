@@ -77,6 +77,7 @@ struct IsphParameters {
   // mesh containers); a moving body's acceleration enters it (g - a_w).
   bool wall_adami = false;
   bool wall_acceleration = false;
+  bool implicit_density = false;  // formulation = "implicit_density" (implicit_density_solve.hpp)
   bool fixed_pressure = false;  // the scene has [[fixed_pressure]] boxes (the column exists)
   double cfl = 0.2;
   double reference_speed = 1;  // sqrt(2 g H); bounds the step only without gravity
