@@ -52,6 +52,7 @@ slow("extension: the out-of-tree example builds against an installed ryushi and 
 slow("stability: a WCSPH sloshing tank run for 200 periods never gains energy" 170 stability long)
 slow("stability: an MPS sloshing tank never gains energy over 200 periods, its jitter falls with resolution" 260 stability long)
 slow("stability: an ISPH sloshing tank (violent-flow set-up, full-support compression) never gains energy over 200 periods at H/d = 20, its jitter falls with resolution" 440 stability long)
+slow("stability: an ISPH sloshing tank (implicit density formulation) never gains energy over 200 periods at H/d = 20" 170 stability long)
 slow("stability: a 2D tank of a million particles takes one step on one thread under WCSPH, MPS and ISPH" 16 stability)
 slow("stability: MPS at a fixed step of 1x its CFL limit keeps the tank, 2x keeps it or fails cleanly" 14 stability)
 slow("stability: ISPH at a fixed step of 1x its CFL limit keeps the tank, 2x keeps it or fails cleanly" 12 stability)
