@@ -189,13 +189,21 @@ class ImplicitDensitySolve final : public System<D> {
         growth_[i] = kappa_[i] * (now - before);
       }
     });
-    // A wall particle's weights over its fluid neighbours (Adami's pressure is their W-mean).
+    // A wall particle's weights over its fluid neighbours and the hydrostatic part of its Adami
+    // pressure, the W-mean of rho0 g . (x_w - x_f): both fixed within the step.
     wall_weight_.assign(n, 0.0);
+    wall_head_.assign(n, 0.0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](auto range) {
-      for (std::size_t i = range.begin(); i != range.end(); ++i)
-        if (kind[i] == kWall)
-          for (auto k = offset_[i]; k < offset_[i + 1]; ++k)
-            if (kind[j_[k]] == kFluid) wall_weight_[i] += w_[k];
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        if (kind[i] != kWall) continue;
+        double head = 0;
+        for (auto k = offset_[i]; k < offset_[i + 1]; ++k)
+          if (kind[j_[k]] == kFluid) {
+            wall_weight_[i] += w_[k];
+            head -= w_[k] * p_.rho0 * p_.gravity.dot(r_[k]);  // r_ = x_f - x_w
+          }
+        if (wall_weight_[i] > 0) wall_head_[i] = head / wall_weight_[i];
+      }
     });
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](auto range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
@@ -225,15 +233,14 @@ class ImplicitDensitySolve final : public System<D> {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, kind.size(), 1024), [&](auto range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         if (kind[i] != kWall) continue;
-        double sum = 0, weight = 0;
-        for (auto k = offset_[i]; k < offset_[i + 1]; ++k) {
-          const auto j = j_[k];
-          if (kind[j] != kFluid) continue;
-          // r_ = x_j - x_i: the wall lies -r_ from the fluid particle, rho0 g . (x_w - x_f) deeper.
-          sum += w_[k] * (p[j] - p_.rho0 * p_.gravity.dot(r_[k]));
-          weight += w_[k];
+        if (!(wall_weight_[i] > 0)) {
+          p[i] = 0;
+          continue;
         }
-        p[i] = weight > 0 ? std::max(0.0, sum / weight) : 0.0;
+        double sum = 0;
+        for (auto k = offset_[i]; k < offset_[i + 1]; ++k)
+          if (kind[j_[k]] == kFluid) sum += w_[k] * p[j_[k]];
+        p[i] = std::max(0.0, sum / wall_weight_[i] + wall_head_[i]);
       }
     });
   }
@@ -259,7 +266,7 @@ class ImplicitDensitySolve final : public System<D> {
   double lattice_sum_, moment_;
   std::size_t fluid_count_ = 0;
   std::vector<std::uint32_t> offset_, j_;
-  std::vector<double> w_, w_before_, wall_weight_, rho_, growth_, kappa_, diagonal_, next_;
+  std::vector<double> w_, w_before_, wall_weight_, wall_head_, rho_, growth_, kappa_, diagonal_, next_;
   std::vector<Vec<D>> g_, r_, a_;
 };
 
