@@ -144,10 +144,7 @@ std::vector<SystemPtr<D>> implicit_density_pipeline(const Scene& s, const IsphPa
   list.push_back(std::make_shared<SupportFilter<D>>(p.kernel.support()));
   ImplicitDensitySettings settings;
   settings.tolerance = s.method_params.number("density_tolerance");
-  settings.relaxation = s.method_params.given("density_relaxation")
-                            ? s.method_params.number("density_relaxation")
-                        : D == 2 ? 0.5
-                                 : 0.25;
+  settings.relaxation = s.method_params.number("density_relaxation");
   list.push_back(std::make_shared<ImplicitDensitySolve<D>>(p, settings));
   const double collision = s.method_params.number("collision_distance");
   if (collision > 0)

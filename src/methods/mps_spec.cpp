@@ -133,7 +133,7 @@ MethodSpec mps_spec() {
       "moving particle semi-implicit (pressure from a Poisson equation each step, solved as set in [solver]; "
       "docs/mps.md)";
   spec.keys = mps_keys();
-  spec.hooks.kernel = [](int) { return std::string("mps"); };
+  spec.hooks.kernel = [](const Scene&) { return std::string("mps"); };
   spec.hooks.smoothing_ratio = [](const Scene& sc) { return sc.dimension == 2 ? 3.1 : 2.1; };
   spec.hooks.solves_pressure = true;
   spec.hooks.step_motion = 2.5;  // |u*| dt below 1.25 cfl l0 per particle (mps.cpp)

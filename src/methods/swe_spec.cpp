@@ -62,7 +62,7 @@ MethodSpec swe_spec() {
                "fluid.surface_elevation",
                "probe.type=front_depth",
                "metric.type=ritter_depth"};
-  spec.hooks.kernel = [](int) { return std::string("spiky"); };
+  spec.hooks.kernel = [](const Scene&) { return std::string("spiky"); };
   spec.hooks.smoothing_ratio = [](const Scene& sc) { return sc.swe.influence_ratio; };
   spec.hooks.cfl = 0.5;
   spec.hooks.read_sections = read_swe_sections;

@@ -174,7 +174,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.smoothing_ratio =
       root["particles"]["smoothing_ratio"].value_or(hooks.smoothing_ratio ? hooks.smoothing_ratio(sc) : 1.5);
   sc.kernel =
-      root["particles"]["kernel"].value_or(hooks.kernel ? hooks.kernel(D) : std::string("wendland_c2"));
+      root["particles"]["kernel"].value_or(hooks.kernel ? hooks.kernel(sc) : std::string("wendland_c2"));
   sc.reorder_interval = static_cast<int>(*get("particles", "reorder_interval").value<long long>());
   sc.neighbour_skin = *get("particles", "neighbour_skin").value<double>();
   sc.density = *get("material", "density").value<double>();

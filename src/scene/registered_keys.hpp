@@ -48,8 +48,9 @@ class MethodParams {
 
 // The scene's defaults and checks that depend on its method. Each is optional.
 struct MethodHooks {
-  // [particles] kernel and smoothing_ratio when the scene leaves them out (by dimension).
-  std::function<std::string(int dimension)> kernel;
+  // [particles] kernel and smoothing_ratio when the scene leaves them out (they may depend on the
+  // dimension and on the [method] keys, read before them).
+  std::function<std::string(const Scene&)> kernel;
   std::function<double(const Scene&)> smoothing_ratio;
   double cfl = 0.2;               // [time] cfl when left out
   double jacobi_weight = 1.0;     // [solver] jacobi_weight when left out
