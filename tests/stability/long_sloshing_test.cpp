@@ -254,12 +254,14 @@ TEST_CASE(
 }
 
 // formulation = "implicit_density" (SPH's symmetric pressure force and its adjoint density
-// change): the pressure does no work in the fluid. Measured 2026-11-29 (1 thread, 165 s): the
-// period mean never rises above its running minimum (0.00 J/m), 1.24 J/m sample by sample, E at
-// most 1.18 J/m above E(0) (first period), E(end) - E(0) = -35.6 J/m with the wave gone (kinetic
-// energy 4e-6 J/m): the stair's 30.7 J/m and 4.9 J/m of potential energy, the water's level 1 mm
-// lower (a density drift the step's source does not return). At H/d = 30 E rises 1.84 J/m above
-// E(0) at t = 0.05 s, over the bound (docs/isph.md): not asserted here.
+// change): the pressure does no work in the fluid. Measured 2026-11-29 with the particle-scale
+// damping at 0.2 (1 thread beside another run, 217 s): the period mean never rises above its
+// running minimum (0.00 J/m), E at most 1.11 J/m above E(0) (first period; sample by sample the
+// same), E(end) - E(0) = -37.5 J/m with the wave gone (kinetic energy 1.5e-8 J/m): the stair's
+// 30.7 J/m and the rest potential energy, the water's level lower (a density drift the step's
+// source does not return). Without the damping 1.24 J/m sample by sample, 1.18 above E(0), -35.6
+// at the end. At H/d = 30 (without the damping) E rose 1.84 J/m above E(0) at t = 0.05 s, over the
+// bound (docs/isph.md): not asserted here.
 TEST_CASE(
     "stability: an ISPH sloshing tank (implicit density formulation) never gains energy over 200 periods at "
     "H/d = 20") {
