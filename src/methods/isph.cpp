@@ -22,7 +22,6 @@
 #include "methods/method.hpp"
 #include "methods/scene_particles.hpp"
 #include "systems/fluid/pair_collision.hpp"
-#include "systems/fluid/particle_scale_damping.hpp"
 #include "systems/integrate/velocity_time_step.hpp"
 #include "systems/isph/fixed_pressure_velocity.hpp"
 #include "systems/isph/implicit_density_solve.hpp"
@@ -138,7 +137,7 @@ void populate_isph_world(const Scene& s, const IsphParameters<D>& p, World<D>& w
 }
 
 // formulation = "implicit_density": after the predictor, the density solve at x* corrects v and x,
-// and the particle-scale damping (particle_damping) takes the jitter out of v; no free-surface
+// its particle-scale damping (particle_damping) taking the jitter out of v; no free-surface
 // detection, no shifting.
 template <int D>
 std::vector<SystemPtr<D>> implicit_density_pipeline(const Scene& s, const IsphParameters<D>& p,
@@ -147,10 +146,8 @@ std::vector<SystemPtr<D>> implicit_density_pipeline(const Scene& s, const IsphPa
   ImplicitDensitySettings settings;
   settings.tolerance = s.method_params.number("density_tolerance");
   settings.relaxation = s.method_params.number("density_relaxation");
+  settings.damping = s.method_params.number("particle_damping");
   list.push_back(std::make_shared<ImplicitDensitySolve<D>>(p, settings));
-  const double damping = s.method_params.number("particle_damping");
-  if (damping > 0)
-    list.push_back(std::make_shared<ParticleScaleDamping<D>>(p.kernel, p.domain, p.spacing, damping));
   const double collision = s.method_params.number("collision_distance");
   if (collision > 0)
     list.push_back(std::make_shared<PairCollision<D>>(PairCollisionParameters{

@@ -32,6 +32,7 @@
 
 #include "ecs/io.hpp"
 #include "kernels/lattice_kernel_sum.hpp"
+#include "systems/fluid/particle_scale_damping.hpp"
 #include "systems/isph/isph_parameters.hpp"
 #include "systems/mps/mps_parameters.hpp"  // components::pressure_gradient
 #include "systems/neighbour/neighbour_list.hpp"
@@ -52,6 +53,7 @@ struct ImplicitDensitySettings {
   double tolerance = 1e-4;
   int max_iterations = 500;
   double relaxation = 0.5;  // Jacobi's omega (density_relaxation)
+  double damping = 0;       // eps of the particle-scale damping after the solve (particle_damping)
 };
 
 template <int D>
@@ -61,7 +63,8 @@ class ImplicitDensitySolve final : public System<D> {
       : p_(p),
         s_(s),
         lattice_sum_(lattice_kernel_sum(p.kernel, p.spacing, p.kernel.support())),
-        moment_(lattice_gradient_moment(p.kernel, p.spacing)) {}
+        moment_(lattice_gradient_moment(p.kernel, p.spacing)),
+        damping_(s.damping, 1.0 / lattice_sum_) {}
   std::string name() const override { return "implicit_density_solve"; }
   static constexpr auto io = Io{reads(components::kind, components::mass, neighbours_resource, resources::dt),
                                 writes(components::position, components::velocity, components::pressure,
@@ -127,6 +130,9 @@ class ImplicitDensitySolve final : public System<D> {
         p_.domain.wrap(x[i]);
       }
     });
+    // The jitter out of the new velocity, over the pairs at x* (the particles have moved dt^2 a
+    // since: a filter's weights need not follow).
+    if (s_.damping > 0) damping_.apply(kind, m, offset_, j_, w_, v);
     ++stats.solves;
     stats.iterations += iterations;
     stats.max_iterations = std::max(stats.max_iterations, iterations);
@@ -264,6 +270,7 @@ class ImplicitDensitySolve final : public System<D> {
   IsphParameters<D> p_;
   ImplicitDensitySettings s_;
   double lattice_sum_, moment_;
+  ParticleScaleDamping<D> damping_;
   std::size_t fluid_count_ = 0;
   std::vector<std::uint32_t> offset_, j_;
   std::vector<double> w_, w_before_, wall_weight_, wall_head_, rho_, growth_, kappa_, diagonal_, next_;
