@@ -148,9 +148,9 @@ std::vector<KeySpec> isph_keys() {
               "isph with formulation = \"implicit_density\": eps of the particle-scale damping after the solve, "
               "v <- v - eps L(L v) with L XSPH's smoothing (src/systems/fluid/particle_scale_damping.hpp): "
               "a wave loses eps (k sigma)^4 / 4 a step, a particle-scale jitter about eps. Without it (0) the "
-              "resting tank below its surface rows moves at 6.4e-4 sqrt(g H) (2D, H/d = 40), with 0.3 at "
-              "6.6e-5; the two-period sloshing wave keeps its height (0.146 m against 0.147). Above about "
-              "0.5 the damping overshoots on a checkerboard."},
+              "resting tank below its surface rows moves at 6.4e-4 sqrt(g H) (2D, H/d = 40), with 0.2 at "
+              "8.4e-5; the two-period sloshing wave keeps its height (0.146 m against 0.147; at 0.3 0.140). "
+              "Above about 0.5 the damping would overshoot on a checkerboard."},
              0.0, 0.5),
       wall_slip_key(),
       hydrostatic_init_key()};
