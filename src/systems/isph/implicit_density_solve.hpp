@@ -66,20 +66,24 @@ class ImplicitDensitySolve final : public System<D> {
         moment_(lattice_gradient_moment(p.kernel, p.spacing)),
         damping_(s.damping, 1.0 / lattice_sum_) {}
   std::string name() const override { return "implicit_density_solve"; }
-  static constexpr auto io = Io{reads(components::kind, components::mass, neighbours_resource, resources::dt),
-                                writes(components::position, components::velocity, components::pressure,
-                                       components::pressure_gradient, solve_statistics_resource)};
-  Access access() const override { return io.access(); }
+  // acceleration: a moving body's (prescribed_motion), for the walls' hydrostatic head.
+  auto io() const {
+    return Io{reads(components::kind, components::mass, neighbours_resource, resources::dt),
+              writes(components::position, components::velocity, components::pressure,
+                     components::pressure_gradient, solve_statistics_resource),
+              optional(p_.wall_acceleration, reads(components::body_acceleration))};
+  }
+  Access access() const override { return io().access(); }
   void initialise(World<D>&, Resources& res) override { res.ensure(solve_statistics_resource); }
 
   void run(SystemContext<D>& ctx) override {
-    auto [kind, m, nl, dt, x, v, p, grad, stats] = io.fetch(ctx);
+    auto [kind, m, nl, dt, x, v, p, grad, stats, acceleration] = io().fetch(ctx);
     const std::size_t n = x.size();
     const double rho0 = p_.rho0, dt2 = dt * dt;
     fluid_count_ = 0;
     for (auto k : kind) fluid_count_ += k == kFluid;
-    pairs(kind, x, v, dt, nl);
-    densities_and_diagonals(kind, m, dt);
+    pairs(x, v, dt, nl);
+    densities_and_diagonals(kind, m, dt, acceleration);
     a_.assign(n, Vec<D>::Zero());
     int iterations = 0;
     double error = 0;
@@ -143,9 +147,9 @@ class ImplicitDensitySolve final : public System<D> {
 
  private:
   // Each particle's neighbours within the support with W and grad_i W at x*, and W at x^n (fluid
-  // neighbours back by dt v*; walls do not move within the step), packed.
-  void pairs(std::span<const std::int32_t> kind, std::span<const Vec<D>> x, std::span<const Vec<D>> v,
-             double dt, const NeighbourList& nl) {
+  // neighbours back by dt v*, walls by dt times their velocity: a prescribed motion has moved a
+  // body to the step's end already, and its push is this step's change), packed.
+  void pairs(std::span<const Vec<D>> x, std::span<const Vec<D>> v, double dt, const NeighbourList& nl) {
     const std::size_t n = x.size();
     offset_.assign(n + 1, 0);
     for (std::size_t i = 0; i < n; ++i) offset_[i + 1] = offset_[i] + nl.count(i);
@@ -158,11 +162,11 @@ class ImplicitDensitySolve final : public System<D> {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](auto range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         auto k = offset_[i];
-        const Vec<D> vi = kind[i] == kFluid ? v[i] : Vec<D>::Zero();
+        const Vec<D> vi = v[i];  // a static wall's is 0
         for (auto j : nl.of(i)) {
           const Vec<D> r = p_.domain.offset(x[i], x[j]);  // x_j - x_i
           const double q = r.norm();
-          const Vec<D> vj = kind[j] == kFluid ? v[j] : Vec<D>::Zero();
+          const Vec<D> vj = v[j];
           j_[k] = j;
           r_[k] = r;
           w_[k] = p_.kernel.w(q);
@@ -176,7 +180,8 @@ class ImplicitDensitySolve final : public System<D> {
 
   // rho_i at x* (walls: rho0), the step's growth rho_i(x*) - rho_i(x^n), and Jacobi's diagonal
   // d(density change)/d p_i (negative): the particle's own term and its fluid neighbours' reaction.
-  void densities_and_diagonals(std::span<const std::int32_t> kind, std::span<const double> m, double dt) {
+  void densities_and_diagonals(std::span<const std::int32_t> kind, std::span<const double> m, double dt,
+                               std::span<const Vec<D>> acceleration) {
     const std::size_t n = kind.size();
     rho_.assign(n, p_.rho0);
     growth_.assign(n, 0.0);
@@ -196,17 +201,19 @@ class ImplicitDensitySolve final : public System<D> {
       }
     });
     // A wall particle's weights over its fluid neighbours and the hydrostatic part of its Adami
-    // pressure, the W-mean of rho0 g . (x_w - x_f): both fixed within the step.
+    // pressure, the W-mean of rho0 (g - a_w) . (x_w - x_f) (a_w a moving body's acceleration):
+    // both fixed within the step.
     wall_weight_.assign(n, 0.0);
     wall_head_.assign(n, 0.0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](auto range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         if (kind[i] != kWall) continue;
         double head = 0;
+        const Vec<D> felt = acceleration.empty() ? p_.gravity : Vec<D>(p_.gravity - acceleration[i]);
         for (auto k = offset_[i]; k < offset_[i + 1]; ++k)
           if (kind[j_[k]] == kFluid) {
             wall_weight_[i] += w_[k];
-            head -= w_[k] * p_.rho0 * p_.gravity.dot(r_[k]);  // r_ = x_f - x_w
+            head -= w_[k] * p_.rho0 * felt.dot(r_[k]);  // r_ = x_f - x_w
           }
         if (wall_weight_[i] > 0) wall_head_[i] = head / wall_weight_[i];
       }
