@@ -9,7 +9,7 @@ acceleration of the fluid there, so with p = 0 at the top (height h):
 
 Once the column by the wall slows its fall (a_z > 0 near the floor) the corner reads more than rho g h:
 an excess over the local hydrostatic pressure is not by itself an error. Between two consecutive frames
-the tool takes the particles within 1.5 spacings of the wall (one per spacing up the column), a_z from
+the tool takes the particles within a spacing of the wall (one per spacing up the column), a_z from
 their velocities by id, the integral as sum a_z d, and h as the highest of them plus d/2; the measured
 corner excess is the mean of p - rho g (h - z) over the particles within 3 spacings of (0, 0).
 Printed per frame pair: the measured excess, the balance's, their difference in % of rho g H (H = the
@@ -56,7 +56,7 @@ def main():
         x = 0.5 * (x0[k0] + x1[k1])
         a_z = (v1[k1][:, 1] - v0[k0][:, 1]) / (t1 - t0)
         p = 0.5 * (p0[k0] + p1[k1])
-        wall = x[:, 0] < 1.5 * d
+        wall = x[:, 0] < d  # the first column (at d/2); the second stands at 1.5 d
         corner = np.hypot(x[:, 0], x[:, 1]) < 3 * d
         if wall.sum() < 3 or not corner.any() or n % a.every:
             continue

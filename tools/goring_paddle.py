@@ -12,7 +12,8 @@ and the paddle moves with the water under the crest's depth-averaged velocity,
 
 integrated here by fourth-order Runge-Kutta. t0 puts the crest where the wave's elevation at the
 paddle at t = 0 is `--start` H (0.002: the paddle starts from rest); the stroke is then close to
-sqrt(16 H h / 3) and the motion lasts about 2 t0.
+sqrt(16 H h / 3) and the motion lasts until the elevation at the paddle is back at `--start` H,
+a little over 2 t0.
 
     /usr/bin/python3 tools/goring_paddle.py --depth 0.2 --height 0.04 OUT.csv [--dt 0.001] [--start 0.002]
 """
@@ -40,8 +41,10 @@ def main():
         eta = H / math.cosh(kappa * (c * (t - t0) - x)) ** 2
         return c * eta / (h + eta)
 
+    # Until the wave's elevation at the paddle is back at `start` H behind the crest.
+    phase_end = math.acosh(1 / math.sqrt(a.start))
     t, x, rows = 0.0, 0.0, []
-    while t <= 2 * t0 + 1e-12:
+    while kappa * (c * (t - t0) - x) < phase_end or t <= t0:
         rows.append((t, x))
         k1 = speed(t, x)
         k2 = speed(t + a.dt / 2, x + a.dt / 2 * k1)

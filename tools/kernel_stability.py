@@ -71,9 +71,9 @@ def lowest_eigenvalue(kernel, dimension, ratio, samples):
         K = np.einsum("n,nab->ab", 1 - np.cos(phase), hessian)
         s = np.einsum("n,na->a", np.sin(phase), grad)
         if np.linalg.norm(s) > 1e-9 * np.abs(grad).sum():
-            u = s / np.linalg.norm(s)
-            P = eye - np.outer(u, u)
-            values = np.sort(np.linalg.eigvalsh(P @ K @ P))[1:]  # the solve's direction left out
+            # K on the complement of s(k): an orthonormal basis of it from the SVD of s^T.
+            basis = np.linalg.svd(s[None, :])[2][1:].T
+            values = np.linalg.eigvalsh(basis.T @ K @ basis)
         else:
             values = np.linalg.eigvalsh(K)
         if values.min() < lowest:

@@ -77,6 +77,7 @@ IsphParameters<D> isph_parameters(const Scene& s) {
   p.wall_adami = mp.text("wall_rows") == "adami";
   p.implicit_density = mp.text("formulation") == "implicit_density";
   p.wall_acceleration = std::any_of(s.solids.begin(), s.solids.end(), [](const SolidSpec& b) { return b.moves(); });
+  for (const auto& b : s.solids) p.moving_bodies.push_back(b.moves());
   p.fixed_pressure = !s.fixed_pressure.empty();
   p.cfl = s.cfl;
   double u = std::sqrt(2.0 * s.gravity_magnitude() * s.fluid_height());

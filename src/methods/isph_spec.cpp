@@ -238,7 +238,12 @@ MethodSpec isph_spec() {
   spec.hooks.kernel = [](const Scene& sc) {
     return std::string(wendland_at_spacing(sc) ? "wendland_c2" : "cubic_spline");
   };
-  spec.hooks.smoothing_ratio = [](const Scene& sc) { return wendland_at_spacing(sc) ? 1.0 : 1.2; };
+  // The width follows the kernel (given or default): Wendland C2 at h = d under implicit density
+  // in either dimension (1.2 d is unstable for it, tools/kernel_stability.py), 1.2 d otherwise.
+  spec.hooks.smoothing_ratio = [](const Scene& sc) {
+    return sc.kernel == "wendland_c2" && sc.method_params.text("formulation") == "implicit_density" ? 1.0
+                                                                                                    : 1.2;
+  };
   spec.hooks.jacobi_weight = 2.0 / 3.0;
   spec.hooks.shifting = "density";
   spec.hooks.solves_pressure = true;

@@ -171,10 +171,11 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   if (hooks.read_sections) hooks.read_sections(sc, root, val);
   sc.disorder = root["particles"]["disorder"].value_or(0.0);
   sc.seed = static_cast<std::uint64_t>(root["particles"]["seed"].value_or(1LL));
-  sc.smoothing_ratio =
-      root["particles"]["smoothing_ratio"].value_or(hooks.smoothing_ratio ? hooks.smoothing_ratio(sc) : 1.5);
   sc.kernel =
       root["particles"]["kernel"].value_or(hooks.kernel ? hooks.kernel(sc) : std::string("wendland_c2"));
+  // After the kernel: a method's default width may depend on it.
+  sc.smoothing_ratio =
+      root["particles"]["smoothing_ratio"].value_or(hooks.smoothing_ratio ? hooks.smoothing_ratio(sc) : 1.5);
   sc.reorder_interval = static_cast<int>(*get("particles", "reorder_interval").value<long long>());
   sc.neighbour_skin = *get("particles", "neighbour_skin").value<double>();
   sc.density = *get("material", "density").value<double>();

@@ -44,17 +44,56 @@ std::vector<SectionSpec> build() {
                  "Per axis: wrap particles and neighbour search across the box. A periodic axis "
                  "must be at least three neighbour-search radii long: 3 (support + neighbour_skin spacings), plus the step's motion for mps and isph (2.5 and 3 cfl spacings)."},
                 choice("outflow", "\"fail\"", "A fluid particle that leaves the box: fail (a numerical failure, exit code 3) or remove (erased between steps, counted as removed_particles and removed_mass in summary.json, the first one logged): spray over an open tank's walls, an open channel's end.", {"fail", "remove"})}});
-  s.push_back({"particles", false, true, "Particle lattice and kernel.",
-               {positive("spacing", "m", "", "Initial particle spacing d (lattice step).", true),
-                ranged({"smoothing_ratio", K::Float, "", "(1.5; method mps: 3.1 in 2D, 2.1 in 3D; isph: 1.2, in 3D with formulation = implicit_density 1.0)", "Smoothing length h = smoothing_ratio * spacing; support radius 2h. 1.5 with Wendland C2 keeps the lattice first moment within 0.3% of the identity (1.3 gives 2.6%, which shows up as a 2.6% pressure error at rest). With the mps kernel h is the influence radius r_e (the BMG paper's 3.1 l0 / 2.1 l0)."}, 0.5, 4.0),
-                choice("kernel", "(wendland_c2; method mps: mps; isph: cubic_spline, in 3D with formulation = implicit_density wendland_c2)", "Smoothing kernel (src/kernels/kernel.hpp). Support radius: 2h, except quintic_spline 3h and mps h (h = r_e). Method mps needs the mps weight.", kernel_names()),
-                ranged({"disorder", K::Float, "spacings", "0.0",
-                        "Displace each fluid particle from its lattice point by a random amount, uniform in [-disorder d, disorder d] on each axis (a reproducible sequence per particle from `seed`): a start without the lattice's symmetry, for robustness checks. Below 0.5, so that no two particles meet."}, 0.0, 0.499),
-                ranged({"seed", K::Integer, "", "1", "Seed of the `disorder` displacements (the same seed gives the same particles)."}, 0, std::nullopt),
-                ranged({"reorder_interval", K::Integer, "steps", "25",
-                        "Reorder particles by cell every this many steps for cache locality (0: never). Ids are stable."}, 0, std::nullopt),
-                ranged({"neighbour_skin", K::Float, "spacings", "0.6",
-                        "The neighbour list is a Verlet list holding the pairs within the method's search radius plus this skin (in units of the spacing d) and is rebuilt only when a particle may have moved half the skin since the last build (or after a reordering); each step the list is filtered to the pairs within the search radius, so the result is the same as with 0 (rebuilt every step). WCSPH: 0.6 was fastest at 255k particles moving at 3 m/s (docs/benchmarks.md). MPS and ISPH (whose search radius already holds the step's own motion, so only the start of the step counts): over the a/d = 100 dam break to t = 0.3 s a build every 2.4 steps, the search 10.9 -> 7.8 ms per step (MPS) and 7.2 -> 5.6 (ISPH); 1.2 and 2.0 gained little more. The candidates cost memory (kept in two bytes each): in 3D WCSPH at 1M particles the neighbour memory goes from 193 to 435 bytes per particle at 0.6 (peak resident 783 and 1,422 bytes per particle at 0 and 0.6), at 10M (more fluid, fewer walls) from 270 to 587 (peak resident 15.0 GiB at 0.6 against 9.0 at 0), in 2D at a/d = 100 MPS 397, ISPH 317, WCSPH 169 at 0.6; set 0 where memory is tighter than time (25% slower at 1M in 3D). isph with formulation = \"implicit_density\": not used, the list is rebuilt every step (its step moves the fastest particle 0.4 d)"}, 0.0, 3.0)}});
+  s.push_back(
+      {"particles",
+       false,
+       true,
+       "Particle lattice and kernel.",
+       {positive("spacing", "m", "", "Initial particle spacing d (lattice step).", true),
+        ranged({"smoothing_ratio", K::Float, "",
+                "(1.5; method mps: 3.1 in 2D, 2.1 in 3D; isph: 1.2, with formulation = implicit_density and "
+                "wendland_c2 1.0)",
+                "Smoothing length h = smoothing_ratio * spacing; support radius 2h. 1.5 with Wendland C2 "
+                "keeps the lattice first moment within 0.3% of the identity (1.3 gives 2.6%, which shows up "
+                "as a 2.6% pressure error at rest). With the mps kernel h is the influence radius r_e (the "
+                "BMG paper's 3.1 l0 / 2.1 l0)."},
+               0.5, 4.0),
+        choice("kernel",
+               "(wendland_c2; method mps: mps; isph: cubic_spline, in 3D with formulation = implicit_density "
+               "wendland_c2)",
+               "Smoothing kernel (src/kernels/kernel.hpp). Support radius: 2h, except quintic_spline 3h and "
+               "mps h (h = r_e). Method mps needs the mps weight.",
+               kernel_names()),
+        ranged({"disorder", K::Float, "spacings", "0.0",
+                "Displace each fluid particle from its lattice point by a random amount, uniform in "
+                "[-disorder d, disorder d] on each axis (a reproducible sequence per particle from `seed`): "
+                "a start without the lattice's symmetry, for robustness checks. Below 0.5, so that no two "
+                "particles meet."},
+               0.0, 0.499),
+        ranged({"seed", K::Integer, "", "1",
+                "Seed of the `disorder` displacements (the same seed gives the same particles)."},
+               0, std::nullopt),
+        ranged({"reorder_interval", K::Integer, "steps", "25",
+                "Reorder particles by cell every this many steps for cache locality (0: never). Ids are "
+                "stable."},
+               0, std::nullopt),
+        ranged(
+            {"neighbour_skin", K::Float, "spacings", "0.6",
+             "The neighbour list is a Verlet list holding the pairs within the method's search radius plus "
+             "this skin (in units of the spacing d) and is rebuilt only when a particle may have moved half "
+             "the skin since the last build (or after a reordering); each step the list is filtered to the "
+             "pairs within the search radius, so the result is the same as with 0 (rebuilt every step). "
+             "WCSPH: 0.6 was fastest at 255k particles moving at 3 m/s (docs/benchmarks.md). MPS and ISPH "
+             "(whose search radius already holds the step's own motion, so only the start of the step "
+             "counts): over the a/d = 100 dam break to t = 0.3 s a build every 2.4 steps, the search 10.9 -> "
+             "7.8 ms per step (MPS) and 7.2 -> 5.6 (ISPH); 1.2 and 2.0 gained little more. The candidates "
+             "cost memory (kept in two bytes each): in 3D WCSPH at 1M particles the neighbour memory goes "
+             "from 193 to 435 bytes per particle at 0.6 (peak resident 783 and 1,422 bytes per particle at 0 "
+             "and 0.6), at 10M (more fluid, fewer walls) from 270 to 587 (peak resident 15.0 GiB at 0.6 "
+             "against 9.0 at 0), in 2D at a/d = 100 MPS 397, ISPH 317, WCSPH 169 at 0.6; set 0 where memory "
+             "is tighter than time (25% slower at 1M in 3D). isph with formulation = \"implicit_density\": "
+             "not used, the list is rebuilt every step (its step moves the fastest particle 0.4 d)"},
+            0.0, 3.0)}});
   s.push_back({"material", false, false, "Fluid properties.",
                {positive("density", "kg/m^3", "1000.0", "Reference density rho0."),
                 non_negative("viscosity", "Pa s", "0.0",

@@ -9,7 +9,9 @@
 // L applied twice damps it at eps (k sigma)^4 / 4 instead (a 1 m wave against a support of 3 cm:
 // 400x less) while a particle-scale mode, where L v ~ -v, still loses about eps a step. Each pair
 // term is antisymmetric, so the momentum is kept; L is symmetric in the mass-weighted product, so
-// the kinetic energy can only fall (by eps sum_i m_i |L v_i|^2). What it is for (docs/isph.md,
+// the kinetic energy changes by -eps |L v|^2 + eps^2 / 2 |L^2 v|^2 (mass-weighted norms): it falls
+// while eps lambda^2 <= 2 for L's eigenvalues lambda (on the lattice |lambda| <= about 1.5, so eps
+// up to 0.5; a compressed cluster has larger row sums). What it is for (docs/isph.md,
 // "Particle-scale damping"): the implicit density formulation's resting tanks jitter at 6-8e-4
 // sqrt(g H) below the surface rows, where water's viscosity damps nothing at the particle scale.
 //

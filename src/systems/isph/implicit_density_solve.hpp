@@ -71,18 +71,18 @@ class ImplicitDensitySolve final : public System<D> {
     return Io{reads(components::kind, components::mass, neighbours_resource, resources::dt),
               writes(components::position, components::velocity, components::pressure,
                      components::pressure_gradient, solve_statistics_resource),
-              optional(p_.wall_acceleration, reads(components::body_acceleration))};
+              optional(p_.wall_acceleration, reads(components::body_acceleration, components::body))};
   }
   Access access() const override { return io().access(); }
   void initialise(World<D>&, Resources& res) override { res.ensure(solve_statistics_resource); }
 
   void run(SystemContext<D>& ctx) override {
-    auto [kind, m, nl, dt, x, v, p, grad, stats, acceleration] = io().fetch(ctx);
+    auto [kind, m, nl, dt, x, v, p, grad, stats, acceleration, body] = io().fetch(ctx);
     const std::size_t n = x.size();
     const double rho0 = p_.rho0, dt2 = dt * dt;
     fluid_count_ = 0;
     for (auto k : kind) fluid_count_ += k == kFluid;
-    pairs(x, v, dt, nl);
+    pairs(kind, body, x, v, dt, nl);
     densities_and_diagonals(kind, m, dt, acceleration);
     a_.assign(n, Vec<D>::Zero());
     int iterations = 0;
@@ -147,9 +147,11 @@ class ImplicitDensitySolve final : public System<D> {
 
  private:
   // Each particle's neighbours within the support with W and grad_i W at x*, and W at x^n (fluid
-  // neighbours back by dt v*, walls by dt times their velocity: a prescribed motion has moved a
-  // body to the step's end already, and its push is this step's change), packed.
-  void pairs(std::span<const Vec<D>> x, std::span<const Vec<D>> v, double dt, const NeighbourList& nl) {
+  // neighbours back by dt v*; the particles of a body under a prescribed motion back by dt times
+  // its velocity: the motion moved them at the start of this step, from where they stood during
+  // the last one, and that push is this step's to answer; other walls stand still), packed.
+  void pairs(std::span<const std::int32_t> kind, std::span<const std::int32_t> body,
+             std::span<const Vec<D>> x, std::span<const Vec<D>> v, double dt, const NeighbourList& nl) {
     const std::size_t n = x.size();
     offset_.assign(n + 1, 0);
     for (std::size_t i = 0; i < n; ++i) offset_[i + 1] = offset_[i] + nl.count(i);
@@ -162,11 +164,16 @@ class ImplicitDensitySolve final : public System<D> {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](auto range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         auto k = offset_[i];
-        const Vec<D> vi = v[i];  // a static wall's is 0
+        auto motion = [&](std::size_t k) {
+          const bool moved =
+              kind[k] == kFluid || (!body.empty() && body[k] >= 0 && p_.moving_bodies[body[k]]);
+          return moved ? v[k] : Vec<D>::Zero();
+        };
+        const Vec<D> vi = motion(i);
         for (auto j : nl.of(i)) {
           const Vec<D> r = p_.domain.offset(x[i], x[j]);  // x_j - x_i
           const double q = r.norm();
-          const Vec<D> vj = v[j];
+          const Vec<D> vj = motion(j);
           j_[k] = j;
           r_[k] = r;
           w_[k] = p_.kernel.w(q);

@@ -3,6 +3,7 @@
 // boundary condition and density-based particle shifting technique", seed 000), fixed at scene
 // load, and the columns only ISPH uses.
 #include <cmath>
+#include <vector>
 
 #include "ecs/component.hpp"
 #include "ecs/math.hpp"
@@ -77,6 +78,9 @@ struct IsphParameters {
   // mesh containers); a moving body's acceleration enters it (g - a_w).
   bool wall_adami = false;
   bool wall_acceleration = false;
+  // Per [[solid]] (components::body): whether a prescribed motion moves it (a lid's `velocity` is
+  // its surface's, not a motion of its particles).
+  std::vector<bool> moving_bodies;
   bool implicit_density = false;  // formulation = "implicit_density" (implicit_density_solve.hpp)
   bool fixed_pressure = false;  // the scene has [[fixed_pressure]] boxes (the column exists)
   double cfl = 0.2;
