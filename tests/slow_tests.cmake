@@ -61,6 +61,7 @@ slow("stability: an ISPH tank with Fickian shifting started with 30% disorder do
 slow("stability: an ISPH tank with density shifting at C = 0.02 started with 30% disorder does not settle (known: it grows)" 12 stability)
 slow("stability: a WCSPH tank started with 30% disorder settles" 10 stability)
 slow("solid: a piston wave maker makes the waves of linear wave-maker theory (WCSPH)" 40)
+slow("isph: a piston wave maker under the implicit density formulation makes Biesel's waves" 30)
 slow("solid: MPS and ISPH read the sliding plate's drag from their own wall layer" 14)
 slow("container: a tank accelerating upwards is the tank at rest under g + a (WCSPH wall acceleration)" 10)
 slow("container: water at rest in a round tank keeps rho g depth (ISPH, Adami walls)" 9)
