@@ -17,6 +17,7 @@
 #include "h5_read.hpp"
 #include "shipped_scene_run.hpp"
 #include "test_util.hpp"
+#include "wave_maker_theory.hpp"
 
 using namespace ryushi;
 
@@ -70,11 +71,6 @@ TEST_CASE("isph: a 3D tank stays at rest under the implicit density formulation"
 // 0.90 and 0.89, -222 N/m. Bounds as for the projection (solid_test.cpp): each period within 15%,
 // the mean within 10%, the force within 10%.
 TEST_CASE("isph: a piston wave maker under the implicit density formulation makes Biesel's waves") {
-  const double g = 9.81, depth = 0.2, stroke = 0.04, omega = 2 * std::numbers::pi;
-  double k = omega * omega / g;
-  for (int n = 0; n < 100; ++n) k = omega * omega / (g * std::tanh(k * depth));
-  const double biesel =
-      stroke * 2 * (std::cosh(2 * k * depth) - 1) / (std::sinh(2 * k * depth) + 2 * k * depth);
   auto dir = test::unique_scratch("isph_implicit_density_flume");
   std::filesystem::create_directories(dir);
   std::string scene = test::read_text(test::scene_path("wave_flume_isph_2d.toml"));
@@ -89,26 +85,18 @@ TEST_CASE("isph: a piston wave maker under the implicit density formulation make
   opt.sets = {"method.formulation=\"implicit_density\"", "time.cfl=0.4", "time.end=5"};
   REQUIRE(run_scene(opt) == kExitDone);
   auto csv = test::read_csv(dir / "out" / "probes.csv");
-  const auto& t = csv["time"];
   for (const char* probe : {"eta_0.6m", "eta_1m"}) {
+    auto heights = test::wave_heights(csv, probe);
+    MESSAGE(std::string(probe), ": heights over Biesel's in periods 2-4: ", heights[0], ", ", heights[1],
+            ", ", heights[2]);
     double mean = 0;
-    for (int period = 2; period < 5; ++period) {
-      double high = -1e9, low = 1e9;
-      for (std::size_t i = 0; i < t.size(); ++i)
-        if (t[i] >= period && t[i] < period + 1)
-          high = std::max(high, csv[probe][i]), low = std::min(low, csv[probe][i]);
-      const double height = (high - low) / biesel;
-      MESSAGE(std::string(probe), ", period ", period, ": height over Biesel's ", height);
+    for (double height : heights) {
       CHECK(test::within_relative(height, 1.0, 0.15));
-      mean += height / 3;
+      mean += height / heights.size();
     }
     CHECK_MESSAGE(test::within_relative(mean, 1.0, 0.10), probe << ": mean height over Biesel's " << mean);
   }
-  double force = 0;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < t.size(); ++i)
-    if (t[i] >= 2 && t[i] < 5) force += csv["piston_force"][i], ++n;
-  REQUIRE(n > 0);
-  MESSAGE("mean force on the paddle over t = 2-5 s: ", force / n, " N/m (hydrostatic thrust -196.2)");
-  CHECK(test::within_relative(force / n, -1000 * g * depth * depth / 2, 0.10));
+  const double force = test::mean_paddle_force(csv);
+  MESSAGE("mean force on the paddle over t = 2-5 s: ", force, " N/m (hydrostatic thrust -196.2)");
+  CHECK(test::within_relative(force, -1000 * 9.81 * 0.2 * 0.2 / 2, 0.10));
 }

@@ -14,6 +14,7 @@
 #include "h5_read.hpp"
 #include "scene_error.hpp"
 #include "test_util.hpp"
+#include "wave_maker_theory.hpp"
 
 using namespace ryushi;
 
@@ -242,46 +243,6 @@ TEST_CASE("solid: bad geometry is bad input naming the solid and the problem") {
   CHECK(!std::filesystem::exists(dir / "out"));
 }
 
-namespace {
-
-// Biesel's far-field height of scenes/wave_flume_2d.toml's piston: H = S 2 (cosh 2kh - 1) /
-// (sinh 2kh + 2kh), with k from the dispersion relation omega^2 = g k tanh kh.
-double biesel_height() {
-  const double g = 9.81, depth = 0.2, stroke = 0.04, omega = 2 * kPi;
-  double k = omega * omega / g;
-  for (int n = 0; n < 100; ++n) k = omega * omega / (g * std::tanh(k * depth));  // dispersion relation
-  return stroke * 2 * (std::cosh(2 * k * depth) - 1) / (std::sinh(2 * k * depth) + 2 * k * depth);
-}
-
-// The largest minus the smallest surface elevation at a probe in each period from t = 2 s to 5 s
-// (the front has passed; the reflection from the far wall returns at t ~ 8 s), over Biesel's H.
-std::vector<double> wave_heights(const test::Csv& csv, const std::string& probe) {
-  const auto& t = csv["time"];
-  const auto& eta = csv[probe];
-  std::vector<double> out;
-  for (int period = 2; period < 5; ++period) {
-    double high = -1e9, low = 1e9;
-    for (std::size_t i = 0; i < t.size(); ++i)
-      if (t[i] >= period && t[i] < period + 1) high = std::max(high, eta[i]), low = std::min(low, eta[i]);
-    out.push_back((high - low) / biesel_height());
-  }
-  return out;
-}
-
-// The force on the paddle averaged over the same whole periods.
-double mean_paddle_force(const test::Csv& csv) {
-  const auto& t = csv["time"];
-  const auto& force = csv["piston_force"];
-  double sum = 0;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < t.size(); ++i)
-    if (t[i] >= 2 && t[i] < 5) sum += force[i], ++n;
-  REQUIRE(n > 0);
-  return sum / n;
-}
-
-}  // namespace
-
 TEST_CASE("solid: a piston wave maker makes the waves of linear wave-maker theory (WCSPH)") {
   // scenes/wave_flume_2d.toml at d = 0.02 m (h / d = 10) to t = 5 s: the wave height 0.6 m
   // (three depths) from the paddle in periods 2-4 against Biesel's. Within 10% (the issue's
@@ -290,14 +251,15 @@ TEST_CASE("solid: a piston wave maker makes the waves of linear wave-maker theor
   auto r = test::run_command(bin() + " run " + test::scene_path("wave_flume_2d.toml") + " --quiet --out " +
                              dir.string() + " --set particles.spacing=0.02 --set time.end=5");
   REQUIRE_MESSAGE(r.code == 0, r.output);
-  CHECK_MESSAGE(test::within_relative(biesel_height(), 0.0406, 0.001), "Biesel height " << biesel_height());
+  CHECK_MESSAGE(test::within_relative(test::biesel_height(), 0.0406, 0.001),
+                "Biesel height " << test::biesel_height());
   auto csv = test::read_csv(dir / "probes.csv");
-  for (double h : wave_heights(csv, "eta_0.6m"))
+  for (double h : test::wave_heights(csv, "eta_0.6m"))
     CHECK_MESSAGE(test::within_relative(h, 1.0, 0.10), "height over Biesel's " << h);
   // The force on the paddle over whole periods: the water's hydrostatic thrust -rho g h^2 / 2 =
   // -196 N/m (the waves' mean momentum flux adds about 1%); within 10%, measured -188 N/m.
-  CHECK_MESSAGE(test::within_relative(mean_paddle_force(csv), -1000 * 9.81 * 0.2 * 0.2 / 2, 0.10),
-                "mean paddle force " << mean_paddle_force(csv) << " N/m");
+  CHECK_MESSAGE(test::within_relative(test::mean_paddle_force(csv), -1000 * 9.81 * 0.2 * 0.2 / 2, 0.10),
+                "mean paddle force " << test::mean_paddle_force(csv) << " N/m");
 }
 
 // The same flume under ISPH (scenes/wave_flume_isph_2d.toml: the violent-flow set-up, h / d = 20),
@@ -316,7 +278,7 @@ TEST_CASE("solid: an ISPH piston wave maker makes the waves of linear wave-maker
   auto csv = test::read_csv(dir / "probes.csv");
   for (const char* probe : {"eta_0.6m", "eta_1m"}) {
     CAPTURE(probe);
-    auto heights = wave_heights(csv, probe);
+    auto heights = test::wave_heights(csv, probe);
     MESSAGE(std::string(probe), ": heights over Biesel's in periods 2-4: ", heights[0], ", ", heights[1],
             ", ", heights[2]);
     // Each period's height within 15% and their mean within the issue's 10%. Measured 2026-11-29:
@@ -331,10 +293,10 @@ TEST_CASE("solid: an ISPH piston wave maker makes the waves of linear wave-maker
     }
     CHECK_MESSAGE(test::within_relative(mean, 1.0, 0.10), "mean height over Biesel's " << mean);
   }
-  MESSAGE("mean force on the paddle over t = 2-5 s: ", mean_paddle_force(csv),
+  MESSAGE("mean force on the paddle over t = 2-5 s: ", test::mean_paddle_force(csv),
           " N/m (hydrostatic thrust -196 N/m)");
-  CHECK_MESSAGE(test::within_relative(mean_paddle_force(csv), -1000 * 9.81 * 0.2 * 0.2 / 2, 0.10),
-                "mean paddle force " << mean_paddle_force(csv) << " N/m");
+  CHECK_MESSAGE(test::within_relative(test::mean_paddle_force(csv), -1000 * 9.81 * 0.2 * 0.2 / 2, 0.10),
+                "mean paddle force " << test::mean_paddle_force(csv) << " N/m");
 }
 
 TEST_CASE(

@@ -158,13 +158,12 @@ std::vector<KeySpec> isph_keys() {
       hydrostatic_init_key()};
 }
 
-bool wendland_at_spacing(const Scene& sc) {
-  return sc.dimension == 3 && sc.method_params.text("formulation") == "implicit_density";
+bool implicit_density(const Scene& sc) {
+  return sc.method_params.text("formulation") == "implicit_density";
 }
 
 bool one_wall_layer(const Scene& sc) {
-  return sc.method_params.text("wall_rows") != "adami" &&
-         sc.method_params.text("formulation") != "implicit_density";
+  return sc.method_params.text("wall_rows") != "adami" && !implicit_density(sc);
 }
 
 void resolve(Scene& sc, const toml::table& root, Validator& val) {
@@ -212,7 +211,7 @@ void validate(const Scene& sc, const toml::table& root, Validator& val) {
           label + "moves, but method isph with description = \"eulerian\" keeps every particle in place");
     if (one_wall_layer(sc) && b.layers != 1) val.fail_entry(root, "solid", i, "layers", label + one_layer);
   }
-  if (eulerian && sc.method_params.text("formulation") == "implicit_density")
+  if (eulerian && implicit_density(sc))
     val.fail(root["method"]["formulation"].node(), "method.formulation",
              "formulation = \"implicit_density\" moves the particles to hold their density; it has no eulerian "
              "description (use formulation = \"projection\" for fixed particles)");
@@ -238,13 +237,12 @@ MethodSpec isph_spec() {
   // Wendland at d too narrow for the dam break's spray): docs/isph.md, "Which kernel holds a
   // lattice under pressure", tools/kernel_stability.py.
   spec.hooks.kernel = [](const Scene& sc) {
-    return std::string(wendland_at_spacing(sc) ? "wendland_c2" : "cubic_spline");
+    return std::string(sc.dimension == 3 && implicit_density(sc) ? "wendland_c2" : "cubic_spline");
   };
   // The width follows the kernel (given or default): Wendland C2 at h = d under implicit density
   // in either dimension (1.2 d is unstable for it, tools/kernel_stability.py), 1.2 d otherwise.
   spec.hooks.smoothing_ratio = [](const Scene& sc) {
-    return sc.kernel == "wendland_c2" && sc.method_params.text("formulation") == "implicit_density" ? 1.0
-                                                                                                    : 1.2;
+    return sc.kernel == "wendland_c2" && implicit_density(sc) ? 1.0 : 1.2;
   };
   spec.hooks.jacobi_weight = 2.0 / 3.0;
   spec.hooks.shifting = "density";

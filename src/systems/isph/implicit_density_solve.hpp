@@ -164,10 +164,10 @@ class ImplicitDensitySolve final : public System<D> {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](auto range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         auto k = offset_[i];
-        auto motion = [&](std::size_t k) {
+        auto motion = [&](std::size_t a) {
           const bool moved =
-              kind[k] == kFluid || (!body.empty() && body[k] >= 0 && p_.moving_bodies[body[k]]);
-          return moved ? v[k] : Vec<D>::Zero();
+              kind[a] == kFluid || (!body.empty() && body[a] >= 0 && p_.moving_bodies[body[a]]);
+          return moved ? v[a] : Vec<D>::Zero();
         };
         const Vec<D> vi = motion(i);
         for (auto j : nl.of(i)) {
