@@ -149,3 +149,91 @@ TEST_CASE("probes: bad wall sensor definitions exit 2 at the key's line and colu
   check(tank_with_sensor("normal = [1.0, 0.0]\n"),
         "[[probe]] 'sensor' of type wall_pressure needs a position");
 }
+
+namespace {
+
+// A 0.5 m block turning rigidly at omega = 2 rad/s about its centre (0.25, 0.25), no walls: the
+// velocity is linear in x, v = (omega (y - yc), -omega (x - xc)), which the Shepard interpolation
+// reproduces inside the block to the lattice's first moment about the probe (a fraction of a
+// percent of omega r at these offsets). The probes sample t = 0 before the first step.
+std::string turning_block(const std::string& method, const std::string& extra_probe = "") {
+  return R"([scene]
+dimension = 2
+[domain]
+min = [-0.5, -0.5]
+max = [1.0, 1.0]
+[particles]
+spacing = 0.0125
+[material]
+density = 1000.0
+[method]
+name = ")" +
+         method + R"("
+[time]
+end = 0.0005
+[[fluid]]
+min = [0.0, 0.0]
+max = [0.5, 0.5]
+angular_velocity = 2.0
+[[probe]]
+name = "vy_east"
+type = "velocity"
+position = [0.4, 0.25]
+axis = 1
+[[probe]]
+name = "vx_north"
+type = "velocity"
+position = [0.25, 0.37]
+[[probe]]
+name = "vx_off"
+type = "velocity"
+position = [0.181, 0.093]
+axis = 0
+[[probe]]
+name = "vy_off"
+type = "velocity"
+position = [0.181, 0.093]
+axis = 1
+)" + extra_probe;
+}
+
+}  // namespace
+
+// Issue 56: `type = "velocity"` reads component `axis` of the fluid velocity at a point.
+TEST_CASE("probes: velocity reads a rigid rotation's velocity at a point, component by component") {
+  for (std::string method : {"wcsph", "mps"}) {
+    CAPTURE(method);
+    auto dir = test::scratch("probe_velocity_" + method);
+    test::write_text(dir / "block.toml", turning_block(method));
+    RunOptions opt;
+    opt.scene = (dir / "block.toml").string();
+    opt.out_dir = (dir / "out").string();
+    opt.quiet = true;
+    REQUIRE(run_scene(opt) == kExitDone);
+    auto probes = test::read_csv(dir / "out" / "probes.csv");
+    REQUIRE(probes["time"].front() == 0.0);
+    const double omega = 2.0, xc = 0.25, yc = 0.25;
+    auto near = [&](const std::string& name, double expected) {
+      const double got = probes[name].front();
+      MESSAGE(name << ": " << got << " against " << expected);
+      CHECK_MESSAGE(std::abs(got - expected) < 5e-3 * std::abs(expected), name);
+    };
+    near("vy_east", -omega * (0.4 - xc));   // v_y = -omega (x - xc)
+    near("vx_north", omega * (0.37 - yc));  // axis 0 by default
+    near("vx_off", omega * (0.093 - yc));
+    near("vy_off", -omega * (0.181 - xc));
+  }
+}
+
+TEST_CASE("probes: a velocity probe without a position or with an axis beyond the dimension exits 2") {
+  auto dir = test::scratch("probe_velocity_bad");
+  auto check = [&](const std::string& probe, const std::string& expected) {
+    test::write_text(dir / "bad.toml", turning_block("wcsph", probe));
+    auto r = test::run_command(std::string(RYUSHI_BINARY) + " check " + (dir / "bad.toml").string());
+    CHECK(r.code == kExitBadInput);
+    CHECK_MESSAGE(r.output.find(expected) != std::string::npos, r.output);
+  };
+  check("[[probe]]\nname = \"v\"\ntype = \"velocity\"\n", "[[probe]] 'v' of type velocity needs a position");
+  check("[[probe]]\nname = \"v\"\ntype = \"velocity\"\nposition = [0.2, 0.2]\naxis = 2\n",
+        "bad.toml:41:8: [[probe]] 'v': axis must be below the dimension");
+}

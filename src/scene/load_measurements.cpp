@@ -48,8 +48,8 @@ void load_measurements(toml::table& root, Validator& val, Scene& sc) {
       p.name = *root["probe"][i]["name"].value<std::string>();
       p.type = *root["probe"][i]["type"].value<std::string>();
       if (auto* pos = at.where("probe", i, "position")) p.position = vec_of(*pos);
-      if ((p.type == "pressure" || p.type == "water_height" || p.type == "solid_displacement" ||
-           p.type == "solid_stress" || p.type == "wall_pressure") &&
+      if ((p.type == "pressure" || p.type == "velocity" || p.type == "water_height" ||
+           p.type == "solid_displacement" || p.type == "solid_stress" || p.type == "wall_pressure") &&
           p.position.empty())
         val.fail(&(*arr)[i], path_of("probe", i, "position"),
                  "[[probe]] '" + p.name + "' of type " + p.type + " needs a position");
@@ -72,7 +72,7 @@ void load_measurements(toml::table& root, Validator& val, Scene& sc) {
           val.fail(at.where("probe", i, "axis"), path_of("probe", i, "axis"),
                    "[[probe]] '" + p.name + "': axis must be below the dimension");
       }
-      if (p.type == "solid_displacement" || p.type == "solid_stress") {
+      if (p.type == "solid_displacement" || p.type == "solid_stress" || p.type == "velocity") {
         p.axis = static_cast<int>(*root["probe"][i]["axis"].value<long long>());
         if (p.axis >= D)
           val.fail(at.where("probe", i, "axis"), path_of("probe", i, "axis"),

@@ -295,7 +295,9 @@ std::vector<SectionSpec> build() {
        "Measurements written to probes.csv (one column each).",
        {{"name", K::String, "", "", "Column name.", true},
         choice("type", "",
-               "pressure: kernel-interpolated (Shepard) fluid pressure at `position`; surge_front: the "
+               "pressure: kernel-interpolated (Shepard) fluid pressure at `position`; velocity: "
+               "component `axis` of the fluid velocity at `position`, interpolated the same way (m/s; a "
+               "line profile is a row of them); surge_front: the "
                "leading edge of the water body, max x + d/2 over the fluid particles with another fluid "
                "particle within 2 d (a droplet thrown ahead is not the front; docs/output.md); water_height: "
                "surface elevation of the water column standing on `position` (where the kernel-interpolated "
@@ -320,14 +322,14 @@ std::vector<SectionSpec> build() {
                "`position` facing along `normal`, the fluid's pressure on its face of `diameter` (Pa): the "
                "mean over the face of the Shepard average of the fluid pressures within 2 d, each carried to "
                "the face along rho0 (g - a_wall), the same for every method and wall type (docs/output.md)",
-               {"pressure", "surge_front", "water_height", "kinetic_energy", "potential_energy",
+               {"pressure", "velocity", "surge_front", "water_height", "kinetic_energy", "potential_energy",
                 "particle_count", "front_depth", "force", "solid_displacement", "solid_stress",
                 "solid_energy", "wall_pressure"},
                true),
         {"position", K::Vector, "m", "",
-         "Where to measure (pressure; for water_height the base of the vertical line, which reads this "
-         "height when dry; for wall_pressure the centre of the sensor's face, on the wall's surface: within "
-         "a spacing of the first wall layer, which lies d/2 behind it)."},
+         "Where to measure (pressure, velocity; for water_height the base of the vertical line, which "
+         "reads this height when dry; for wall_pressure the centre of the sensor's face, on the wall's "
+         "surface: within a spacing of the first wall layer, which lies d/2 behind it)."},
         {"normal", K::Vector, "", "",
          "wall_pressure: the direction the sensor faces, out of the wall into the fluid (made unit; "
          "required)."},
@@ -337,7 +339,7 @@ std::vector<SectionSpec> build() {
             "required). Experiments' sensors are a few mm wide; the reading is averaged over the face."),
         {"solid", K::String, "", "", "force: the [[solid]] (its name) the fluid pushes on."},
         ranged({"axis", K::Integer, "", "0",
-                "force, solid_displacement, solid_stress: the component (0 = x, 1 = y, 2 = z)."},
+                "force, solid_displacement, solid_stress, velocity: the component (0 = x, 1 = y, 2 = z)."},
                0, 2)}});
   s.push_back({"metric", true, false,
                "A run's error against a reference that ships with ryushi, written under \"metrics\" in summary.json and printed at the end (src/metrics/metrics.hpp; `ryushi sweep` collects them).",

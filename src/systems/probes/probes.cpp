@@ -148,7 +148,8 @@ std::vector<double> sample_probes(const std::vector<Probe>& probes, const World<
   for (auto& probe : probes) {
     Vec<D> at = Vec<D>::Zero();
     for (std::size_t a = 0; a < probe.position.size(); ++a) at[a] = probe.position[a];
-    if (probe.type == "pressure") {
+    if (probe.type == "pressure" || probe.type == "velocity") {
+      const bool velocity = probe.type == "velocity";
       const double support2 = kernel.support() * kernel.support();
       auto [num, den] = reduce_particles(
           world.size(), {0.0, 0.0},
@@ -157,7 +158,7 @@ std::vector<double> sample_probes(const std::vector<Probe>& probes, const World<
             const double r2 = (x[i] - at).squaredNorm();
             if (r2 >= support2 || !(rho[i] > 0)) return;  // MPS: a lone particle's rho0 n* / n0 is 0
             double w = kernel.w(std::sqrt(r2)) * m[i] / rho[i];
-            acc.first += p[i] * w;
+            acc.first += (velocity ? v[i][probe.axis] : p[i]) * w;
             acc.second += w;
           },
           false);

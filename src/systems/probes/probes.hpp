@@ -2,6 +2,7 @@
 // Probes sampled between steps into probes.csv:
 //   pressure      Shepard-normalised kernel interpolation of fluid pressure at a point:
 //                 p(x) = sum_j p_j V_j W(x - x_j) / sum_j V_j W(x - x_j)
+//   velocity      component `axis` of the fluid velocity at a point, interpolated the same way
 //   surge_front   the leading edge of the water body: max of x (first axis) + d/2, the outer
 //                 edge, over the fluid particles that have another fluid particle within 2 d,
 //                 so that it equals the block width at t = 0. A droplet thrown ahead of the
@@ -44,7 +45,7 @@ namespace ryushi {
 struct Probe {
   std::string type;
   std::vector<double> position;
-  int solid = -1, axis = 0;  // force: the [[solid]]'s index and the component
+  int solid = -1, axis = 0;    // force: the [[solid]]'s index and the component (also velocity)
   std::vector<double> normal;  // wall_pressure: out of the wall, into the fluid (unit)
   double diameter = 0;         // wall_pressure: the sensor face's
 };
