@@ -2,6 +2,8 @@
 // particle near its line (systems/probes/probes.hpp).
 #include <doctest/doctest.h>
 
+#include <filesystem>
+
 #include "app/exit_codes.hpp"
 #include "app/run.hpp"
 #include "test_util.hpp"
@@ -9,6 +11,27 @@
 using namespace ryushi;
 
 namespace {
+
+// Runs `scene` (TOML text) in a scratch directory named `label` and returns its probes.csv.
+auto probes_of_run(const std::string& label, const std::string& scene) {
+  auto dir = test::scratch(label);
+  test::write_text(dir / "scene.toml", scene);
+  RunOptions opt;
+  opt.scene = (dir / "scene.toml").string();
+  opt.out_dir = (dir / "out").string();
+  opt.quiet = true;
+  REQUIRE(run_scene(opt) == kExitDone);
+  return test::read_csv(dir / "out" / "probes.csv");
+}
+
+// `ryushi check` on `scene` written as DIR/bad.toml exits 2 with `expected` in its message.
+void check_bad_scene(const std::filesystem::path& dir, const std::string& scene,
+                     const std::string& expected) {
+  test::write_text(dir / "bad.toml", scene);
+  auto r = test::run_command(std::string(RYUSHI_BINARY) + " check " + (dir / "bad.toml").string());
+  CHECK(r.code == kExitBadInput);
+  CHECK_MESSAGE(r.output.find(expected) != std::string::npos, r.output);
+}
 
 // Water 0.5 m deep in a 0.5 m wide tank; three particles (one column) cling to the left wall
 // 0.2 m above the surface, where the old probe (highest particle + d/2) read 0.7375 m.
@@ -65,14 +88,7 @@ position = [0.25, 0.6]
 TEST_CASE("probes: water_height reads the water surface, not particles clinging to the wall above it") {
   for (std::string method : {"wcsph", "mps"}) {
     CAPTURE(method);
-    auto dir = test::scratch("probe_height_" + method);
-    test::write_text(dir / "tank.toml", tank_with_stray_particles(method));
-    RunOptions opt;
-    opt.scene = (dir / "tank.toml").string();
-    opt.out_dir = (dir / "out").string();
-    opt.quiet = true;
-    REQUIRE(run_scene(opt) == kExitDone);
-    auto probes = test::read_csv(dir / "out" / "probes.csv");
+    auto probes = probes_of_run("probe_height_" + method, tank_with_stray_particles(method));
     for (auto name : {"at_wall", "mid", "corner", "dry"}) REQUIRE_MESSAGE(probes[name].size() >= 1, name);
     // At t = 0 the surface is the top row's edge, 0.5 m. The fill fraction's 1/2 level lies
     // within a quarter spacing of it on the lattice (measured: see the printed values).
@@ -125,10 +141,7 @@ diameter = 0.005
 TEST_CASE("probes: bad wall sensor definitions exit 2 at the key's line and column") {
   auto dir = test::scratch("probe_wall_sensor_bad");
   auto check = [&](const std::string& text, const std::string& expected) {
-    test::write_text(dir / "bad.toml", text);
-    auto r = test::run_command(std::string(RYUSHI_BINARY) + " check " + (dir / "bad.toml").string());
-    CHECK(r.code == kExitBadInput);
-    CHECK_MESSAGE(r.output.find(expected) != std::string::npos, r.output);
+    check_bad_scene(dir, text, expected);
   };
   const std::string on_left_wall = "position = [0.0, 0.1]\n";
   // The good one passes (so that the others fail for their own reason).
@@ -203,14 +216,7 @@ axis = 1
 TEST_CASE("probes: velocity reads a rigid rotation's velocity at a point, component by component") {
   for (std::string method : {"wcsph", "mps"}) {
     CAPTURE(method);
-    auto dir = test::scratch("probe_velocity_" + method);
-    test::write_text(dir / "block.toml", turning_block(method));
-    RunOptions opt;
-    opt.scene = (dir / "block.toml").string();
-    opt.out_dir = (dir / "out").string();
-    opt.quiet = true;
-    REQUIRE(run_scene(opt) == kExitDone);
-    auto probes = test::read_csv(dir / "out" / "probes.csv");
+    auto probes = probes_of_run("probe_velocity_" + method, turning_block(method));
     REQUIRE(probes["time"].front() == 0.0);
     const double omega = 2.0, xc = 0.25, yc = 0.25;
     auto near = [&](const std::string& name, double expected) {
@@ -228,10 +234,7 @@ TEST_CASE("probes: velocity reads a rigid rotation's velocity at a point, compon
 TEST_CASE("probes: a velocity probe without a position or with an axis beyond the dimension exits 2") {
   auto dir = test::scratch("probe_velocity_bad");
   auto check = [&](const std::string& probe, const std::string& expected) {
-    test::write_text(dir / "bad.toml", turning_block("wcsph", probe));
-    auto r = test::run_command(std::string(RYUSHI_BINARY) + " check " + (dir / "bad.toml").string());
-    CHECK(r.code == kExitBadInput);
-    CHECK_MESSAGE(r.output.find(expected) != std::string::npos, r.output);
+    check_bad_scene(dir, turning_block("wcsph", probe), expected);
   };
   check("[[probe]]\nname = \"v\"\ntype = \"velocity\"\n", "[[probe]] 'v' of type velocity needs a position");
   check("[[probe]]\nname = \"v\"\ntype = \"velocity\"\nposition = [0.2, 0.2]\naxis = 2\n",
