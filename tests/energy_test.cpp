@@ -231,10 +231,11 @@ TEST_CASE(
 }
 
 // formulation = "implicit_density": SPH's symmetric pressure force and the density change that is
-// its adjoint, so the pressure does no work in the fluid; the particle-scale damping (0.2) takes
-// only the jitter. Measured 2026-11-29 (2 threads): E - E(0) between -8.2 and +0.89 J/m, the left
-// wall highest again at 1.015 periods, 0.146 m of the wave left (without the damping -6.1 .. +0.93,
-// 1.008, 0.147 m; XSPH's smoothing at 0.05 instead left 0.130 m).
+// its adjoint, so the pressure does no work in the fluid. Undamped (the default since the settle;
+// the tilted start is not at rest and is not settled). Measured 2026-11-29 (2 threads): E - E(0)
+// between -6.1 and +0.93 J/m, the left wall highest again at 1.008 periods, 0.147 m of the wave left
+// (with the particle-scale damping at 0.2 -8.2 .. +0.89, 1.015, 0.146 m; XSPH's smoothing at 0.05
+// instead left 0.130 m).
 TEST_CASE("energy: an ISPH sloshing tank with the implicit density formulation never gains energy") {
   check_sloshing_energy("isph", {"method.formulation=\"implicit_density\""});
 }

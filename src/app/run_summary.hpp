@@ -54,6 +54,15 @@ void Runner<D>::write_summary(const std::string& status, const std::string& mess
   getrusage(RUSAGE_SELF, &usage);
   w.key("peak_resident_bytes").value(1024.0 * usage.ru_maxrss);
   w.end_object();
+  if (settled_.requested > 0) {  // the start's settling (app/settle.hpp), before t = 0
+    w.key("settle").begin_object();
+    w.key("steps").value(static_cast<std::int64_t>(settled_.steps));
+    w.key("at_rest").value(settled_.at_rest);
+    w.key("largest_displacement").value(settled_.largest_displacement);
+    w.key("wall_time_s").value(settled_.wall_s);
+    w.key("refused").value(settled_.refused);
+    w.end_object();
+  }
   w.key("parameters").begin_object();
   w.key("spacing").value(scene_.spacing);
   for (auto& [name, value] : method_parameters_) w.key(name).value(value);

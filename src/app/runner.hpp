@@ -27,6 +27,7 @@
 #include "app/run.hpp"
 #include "app/run_files.hpp"
 #include "app/run_probes.hpp"
+#include "app/settle.hpp"
 #include "ecs/scheduler.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json.hpp"
@@ -71,6 +72,7 @@ class Runner {
     method_diagnostics_ = method.diagnostics;
     method_summary_ = method.summary;
     density_may_vanish_ = method.density_may_vanish;
+    settled_.requested = method.settle_steps;
     res_.ensure(domain_resource<D>) = context_.domain;
     res_.ensure(resources::time) = 0.0;
     res_.ensure(resources::step) = 0;
@@ -96,10 +98,6 @@ class Runner {
     if (h.index != HealthCheck<D>::kNone)
       throw SceneError(scene_.path + ": the initial state is invalid: particle id " +
                        std::to_string(world_.column(components::id)[h.index]) + " " + h.problem);
-    // After a resume: the scales, the energy's start and the density's timer are the original
-    // run's, as the checkpoint holds them (older checkpoints: the restored state's).
-    health_.prepare(scene_, world_, context_);
-    if (!restored_monitor_.empty()) health_.restore(restored_monitor_);
     // A fresh run into a directory that holds another run's files: that run's checkpoint would
     // later resume into this run's frames (issue 51: frames of two scenes, a particles.xdmf
     // pointing at missing files).
@@ -109,6 +107,11 @@ class Runner {
         throw SceneError(out_.string() + ": holds another run's files (" + found +
                          "): pass --overwrite to replace them, or continue that run with `ryushi resume " +
                          out_.string() + "`");
+    if (resume_.empty()) settle_start();  // app/run_settle.hpp
+    // After a resume: the scales, the energy's start and the density's timer are the original
+    // run's, as the checkpoint holds them (older checkpoints: the restored state's).
+    health_.prepare(scene_, world_, context_);
+    if (!restored_monitor_.empty()) health_.restore(restored_monitor_);
   }
 
   int run() {
@@ -211,15 +214,13 @@ class Runner {
 
  private:
   void advance() {
-    // Also before the first step: the scene's blocks come in lattice order, walls after the
-    // fluid, so a wall and the fluid beside it sit a whole block apart in index until the first
-    // reorder (which keeps WCSPH's each-pair-once pass from running in parallel blocks). That
-    // one sorts by a grid of the neighbour search's cell (or of the kernel's support, two
-    // spacings at least, for a method without one), since no search has run yet: in another
-    // grid's order every row of the first list comes out of order and is sorted (3D MPS at 1M
-    // particles: 3 s of the first step), and so is every row rebuilt until the next reorder.
-    // It used to follow the first step, which then ran on the unsorted lattice and rebuilt the
-    // neighbour list a second time (an MPS run at 1.36M particles: 1.0 s).
+    // Also before the first step: the scene's blocks come in lattice order, walls after the fluid,
+    // a whole block apart in index until the first reorder (which keeps WCSPH's each-pair-once pass
+    // from running in parallel blocks). It sorts by a grid of the neighbour search's cell (or of the
+    // kernel's support, two spacings at least), since no search has run yet: in another grid's order
+    // every row of the first list is sorted (3D MPS at 1M particles: 3 s of the first step), and so
+    // is every row rebuilt until the next reorder. It once followed the first step, which ran on
+    // the unsorted lattice and rebuilt the list a second time (MPS at 1.36M particles: 1.0 s).
     if (scene_.reorder_interval > 0 && step_ % scene_.reorder_interval == 0) {
       Profiler::Scope t(profiler_, slot_reorder_);
       CellGrid<D> start_grid;
@@ -389,6 +390,7 @@ class Runner {
   }
 
   void write_summary(const std::string& status, const std::string& message);  // run_summary.hpp
+  void settle_start();                                                        // run_settle.hpp
 
   std::vector<std::pair<std::string, double>> metrics() const {
     return evaluate_metrics<D>(scene_, world_, probe_rows_, context_.rho0, context_.gravity_magnitude, time_);
@@ -425,6 +427,7 @@ class Runner {
   std::vector<FrameRecord> frames_;
   std::vector<std::vector<double>> probe_rows_;
   Diagnostics initial_;
+  SettleReport settled_;  // the start's settling (app/settle.hpp), before t = 0
   double time_ = 0, dt_used_ = 0, next_output_ = 0, next_probe_ = 0;
   long long step_ = 0;
   std::size_t removed_ = 0;  // fluid particles erased by outflow = "remove"
@@ -443,4 +446,5 @@ class Runner {
 }  // namespace ryushi
 
 #include "app/run_checkpoint.hpp"
+#include "app/run_settle.hpp"
 #include "app/run_summary.hpp"

@@ -31,6 +31,11 @@ class Profiler {
   double step_total_s() const { return step_total_s_; }
   // Adds the calls and seconds of an earlier segment of the run (a checkpoint's), by name.
   void restore(const std::vector<Entry>& earlier, double step_total_s);
+  // Forgets every slot's calls and time (the steps that settled the start are not the run's).
+  void clear_times() {
+    for (auto& e : entries_) e.calls = 0, e.total_s = 0;
+    step_total_s_ = 0;
+  }
 
   const std::vector<Entry>& entries() const { return entries_; }
   double accounted_s() const;

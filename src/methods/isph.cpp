@@ -223,6 +223,7 @@ MethodSetup<D> build_isph(const Scene& s, World<D>& world, const PipelineOptions
   // term was tuned at (the sloshing tank's volume, docs/isph.md), whatever the scene's CFL.
   p.relaxation_time = kTunedCfl * p.spacing / std::max(vmax, p.reference_speed);
   m.pipeline = isph_pipeline<D>(s, p);
+  if (p.implicit_density) m.settle_steps = s.method_params.integer("settle_steps");
   char b[96];
   std::snprintf(b, sizeof b, "h = %.4g m, %s, bicgstab + ", p.kernel.h(), s.method_params.text("description").c_str());
   m.summary = b + s.solver.preconditioner;

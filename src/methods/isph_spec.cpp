@@ -144,16 +144,27 @@ std::vector<KeySpec> isph_keys() {
               "kernels than the defaults it may have to fall (Wendland C2 at h = 1.5 d in 2D diverged at step "
               "2 at 0.5 and holds at 0.1)."},
              0.01, 1.0),
-      ranged({"particle_damping", K::Float, "", "0.2",
+      ranged({"particle_damping", K::Float, "", "0",
               "isph with formulation = \"implicit_density\": eps of the particle-scale damping after the solve, "
               "v <- v - eps L(L v) with L XSPH's smoothing (src/systems/fluid/particle_scale_damping.hpp): "
-              "a wave loses eps (k sigma)^4 / 4 a step, a particle-scale jitter about eps. Without it (0) the "
-              "resting tank below its surface rows moves at 6.4e-4 sqrt(g H) (2D, H/d = 40), with 0.2 at "
-              "8.4e-5; the two-period sloshing wave keeps its height (0.146 m against 0.147; at 0.3 0.140). "
-              "It drains travelling waves, the more the finer the particles: a solitary wave's crest 20 depths "
-              "from the paddle -5.8% at d = h/20 (-3.0% without), -20.5% at h/40 (docs/isph.md, \"Moving "
-              "walls and the solitary wave\"). Above about 0.5 the damping would overshoot on a checkerboard."},
+              "a particle-scale jitter loses about eps a step. Off by default: it lowers and broadens "
+              "travelling waves (a solitary wave's crest 20 depths from the paddle -5.8% at 0.2, -19.4% at "
+              "0.1, -3.0% at 0, d = h/20), and the resting tank's motion that it held down comes from the "
+              "lattice's start, which settle_steps removes (docs/isph.md, \"Settling before t = 0\"). A "
+              "start far from equilibrium (a 30% disordered lattice) keeps its particle-scale energy without "
+              "it; 0.2 takes it out within 2 s. Above about 0.5 the damping would overshoot on a "
+              "checkerboard."},
              0.0, 0.5),
+      ranged({"settle_steps", K::Integer, "", "1000",
+              "isph with formulation = \"implicit_density\": steps run before t = 0 with every fluid velocity "
+              "scaled by 0.99 after each, the clock held at 0, so that water at rest starts in the discrete "
+              "equilibrium near the lattice (where the surface meets a wall the lattice's corner particle is "
+              "pushed at 0.03 g and, undamped, keeps a 2D tank moving at 6.4e-4 sqrt(g H)). A fluid that is "
+              "not at rest (a dam-break column) moves a particle half a spacing within a few dozen steps: the "
+              "settle stops and the run starts as the scene made it; a fluid given a velocity is not "
+              "settled. summary.json's settle block says which (app/settle.hpp; docs/isph.md, \"Settling "
+              "before t = 0\"). 0: no settling."},
+             0, 100000),
       wall_slip_key(),
       hydrostatic_init_key()};
 }

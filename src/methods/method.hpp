@@ -49,6 +49,9 @@ struct MethodSetup {
   // Per-particle fields its physics makes worth seeing, written to every frame besides the
   // default ones and [output] fields (temperature, the apparent viscosity).
   std::vector<std::string> frame_fields;
+  // Steps run before t = 0 with the velocities damped, so that a fluid at rest starts in the
+  // discrete equilibrium near the scene's lattice (app/settle.hpp); 0: the lattice as it is.
+  long settle_steps = 0;
 };
 
 template <int D>
