@@ -218,6 +218,8 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   sc.cfl = root["time"]["cfl"].value_or(hooks.cfl);
   sc.fixed_dt = *get("time", "dt").value<double>();
   sc.max_steps = *get("time", "max_steps").value<long long>();
+  sc.steady_tolerance = *get("time", "steady_tolerance").value<double>();
+  sc.steady_window = *get("time", "steady_window").value<double>();
   sc.dt_min = *get("time", "dt_min").value<double>();
   sc.step_rule = *get("time", "step_rule").value<std::string>();
   sc.output_interval = root["output"]["interval"].value_or(sc.end_time / 20.0);

@@ -192,6 +192,7 @@ struct Scene {
   double end_time = 0, cfl = 0.2, fixed_dt = 0, dt_min = 1e-9;
   std::string step_rule = "cfl";  // wcsph: cfl or seed001 (seed 001 eq. 35)
   long long max_steps = 0;
+  double steady_tolerance = 0, steady_window = 0;  // [time]: the steady-state stop (0: off)
   double output_interval = 0, probe_interval = 0, checkpoint_interval = 0;
   std::vector<std::string> output_fields;
   std::vector<FluidBlock> fluid;
