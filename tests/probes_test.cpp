@@ -240,3 +240,41 @@ TEST_CASE("probes: a velocity probe without a position or with an axis beyond th
   check("[[probe]]\nname = \"v\"\ntype = \"velocity\"\nposition = [0.2, 0.2]\naxis = 2\n",
         "bad.toml:41:8: [[probe]] 'v': axis must be below the dimension");
 }
+
+// A line of velocity probes (`end`, `points`): the profile of u_x along the block's vertical
+// centreline, u_x = omega (y - yc), at nine points from y = 0.05 to 0.45, each within 0.5% of
+// omega r (the single probes' bound above) and the columns named in order.
+TEST_CASE("probes: a line of velocity probes reads a rigid rotation's profile point by point") {
+  auto probes = probes_of_run("probe_velocity_line", turning_block("wcsph", R"([[probe]]
+name = "u_centre"
+type = "velocity"
+position = [0.25, 0.05]
+end = [0.25, 0.45]
+points = 9
+)"));
+  const double omega = 2.0, yc = 0.25;
+  for (int k = 0; k < 9; ++k) {
+    const std::string name = "u_centre_" + std::to_string(k);
+    REQUIRE_MESSAGE(probes.count(name) == 1, name);
+    const double y = 0.05 + 0.05 * k, expected = omega * (y - yc), got = probes[name].front();
+    CAPTURE(name);
+    CHECK(std::abs(got - expected) < 5e-3 * omega * 0.2);  // 0.5% of the speed 0.2 m from the centre
+  }
+}
+
+TEST_CASE("probes: a line without points, with points but no end, or ending outside the domain exits 2") {
+  auto dir = test::scratch("probe_line_bad");
+  auto check = [&](const std::string& probe, const std::string& expected) {
+    check_bad_scene(dir, turning_block("wcsph", probe), expected);
+  };
+  const std::string head = "[[probe]]\nname = \"u\"\ntype = \"velocity\"\nposition = [0.25, 0.05]\n";
+  check(head + "end = [0.25, 0.45]\n", "bad.toml:41:7: [[probe]] 'u': a line needs `points`");
+  check(head + "points = 5\n", "bad.toml:41:10: [[probe]] 'u': points needs `end`, the line's other end");
+  check(head + "end = [0.25, 4.0]\npoints = 5\n",
+        "bad.toml:41:7: [[probe]] 'u': end lies outside the domain");
+  check(head + "end = [0.25, 0.45]\npoints = 1\n", "points");
+  check(
+      "[[probe]]\nname = \"h\"\ntype = \"water_height\"\nposition = [0.25, 0.05]\nend = [0.3, 0.05]\npoints "
+      "= 3\n",
+      "a line (`end`) is for pressure and velocity probes");
+}

@@ -36,6 +36,53 @@ void load_wall_sensor(toml::table& root, Validator& val, const SceneEntries& at,
   p.normal_where = val.location(normal, path_of("probe", i, "normal"));
 }
 
+// A pressure or velocity probe with `end` and `points`: the line of `points` probes from
+// `position` to `end` (both included), named NAME_0 ... NAME_{points-1} (a velocity profile across
+// a cavity, a pressure profile down a wall). Empty without `end`.
+std::vector<ProbeSpec> line_of_probes(toml::table& root, Validator& val, const SceneEntries& at,
+                                      std::size_t i, const ProbeSpec& p) {
+  auto* end_node = at.where("probe", i, "end");
+  auto points = root["probe"][i]["points"].value<long long>();
+  if (!end_node) {
+    if (points)
+      val.fail(at.where("probe", i, "points"), path_of("probe", i, "points"),
+               "[[probe]] '" + p.name + "': points needs `end`, the line's other end");
+    return {};
+  }
+  if (p.type != "pressure" && p.type != "velocity") {
+    val.fail(end_node, path_of("probe", i, "end"),
+             "[[probe]] '" + p.name + "': a line (`end`) is for pressure and velocity probes");
+    return {};
+  }
+  const auto end = vec_of(*end_node);
+  if (!points) {
+    val.fail(end_node, path_of("probe", i, "end"), "[[probe]] '" + p.name + "': a line needs `points`");
+    return {};
+  }
+  if (end.size() != p.position.size() || !at.inside(end, end)) {
+    val.fail(end_node, path_of("probe", i, "end"), "[[probe]] '" + p.name + "': end lies outside the domain");
+    return {};
+  }
+  std::vector<ProbeSpec> line;
+  for (long long k = 0; k < *points; ++k) {
+    ProbeSpec q = p;
+    q.name = p.name + "_" + std::to_string(k);
+    const double s = double(k) / double(*points - 1);
+    for (std::size_t a = 0; a < end.size(); ++a) q.position[a] = p.position[a] + s * (end[a] - p.position[a]);
+    line.push_back(std::move(q));
+  }
+  return line;
+}
+
+// Appends a probe; two of one name are bad input at the [[probe]]'s name.
+void add_probe(Scene& sc, Validator& val, const SceneEntries& at, std::size_t i, ProbeSpec p) {
+  for (auto& q : sc.probes)
+    if (q.name == p.name)
+      val.fail(at.where("probe", i, "name"), path_of("probe", i, "name"),
+               "two probes are named '" + p.name + "'");
+  sc.probes.push_back(std::move(p));
+}
+
 }  // namespace
 
 void load_measurements(toml::table& root, Validator& val, Scene& sc) {
@@ -78,14 +125,14 @@ void load_measurements(toml::table& root, Validator& val, Scene& sc) {
           val.fail(at.where("probe", i, "axis"), path_of("probe", i, "axis"),
                    "[[probe]] '" + p.name + "': axis must be below the dimension");
       }
+      if (auto line = line_of_probes(root, val, at, i, p); !line.empty()) {
+        for (auto& q : line) add_probe(sc, val, at, i, std::move(q));
+        continue;
+      }
       if (p.type.rfind("solid_", 0) == 0 && !root["elastic"])
         val.fail(at.where("probe", i, "type"), path_of("probe", i, "type"),
                  "[[probe]] '" + p.name + "': " + p.type + " needs an [[elastic]] body");
-      for (auto& q : sc.probes)
-        if (q.name == p.name)
-          val.fail(at.where("probe", i, "name"), path_of("probe", i, "name"),
-                   "two probes are named '" + p.name + "'");
-      sc.probes.push_back(std::move(p));
+      add_probe(sc, val, at, i, std::move(p));
     }
   }
   if (auto* arr = root["metric"].as_array()) {

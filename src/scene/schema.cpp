@@ -332,6 +332,12 @@ std::vector<SectionSpec> build() {
          "Where to measure (pressure, velocity; for water_height the base of the vertical line, which "
          "reads this height when dry; for wall_pressure the centre of the sensor's face, on the wall's "
          "surface: within a spacing of the first wall layer, which lies d/2 behind it)."},
+        {"end", K::Vector, "m", "",
+         "pressure, velocity: the other end of a line of `points` probes from `position` (both ends "
+         "included), written as the columns NAME_0 ... NAME_{points-1} (a velocity profile along a "
+         "cavity's centreline; docs/output.md)."},
+        ranged({"points", K::Integer, "", "", "pressure, velocity with `end`: how many probes the line holds."},
+               2, 10000),
         {"normal", K::Vector, "", "",
          "wall_pressure: the direction the sensor faces, out of the wall into the fluid (made unit; "
          "required)."},
