@@ -79,6 +79,7 @@ slow("container: water in a round tank stays at rest to t = 5 s (ISPH, Adami wal
 slow("isph: the one-set-up candidate meets the dam-break criterion and runs through the impact" 22)
 slow("isph: a resting tank keeps rho g depth and stays still with the one-set-up candidate" 12)
 slow("energy: an ISPH sloshing tank with the one-set-up candidate never gains energy and keeps the period" 12)
+slow("cavity: the Re = 100 lid-driven cavity reaches Ghia's centreline velocities" 20)
 
 # The check: every name above is a test of ryushi_tests or ryushi_stability_tests. Skipped when an
 # executable is not built yet (its list is undefined and ctest shows it as *_NOT_BUILT).
