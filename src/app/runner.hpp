@@ -40,6 +40,7 @@
 #include "systems/io/xdmf.hpp"
 #include "systems/neighbour/neighbour_search.hpp"
 #include "systems/pressure/pressure_system.hpp"
+#include "systems/probes/vorticity_field.hpp"
 
 namespace ryushi {
 
@@ -83,6 +84,9 @@ class Runner {
     for (auto& f : method.frame_fields)
       if (std::find(frame_fields_.begin(), frame_fields_.end(), f) == frame_fields_.end())
         frame_fields_.push_back(f);
+    // A field computed when a frame is written (systems/probes/vorticity_field.hpp).
+    if (std::count(frame_fields_.begin(), frame_fields_.end(), "vorticity"))
+      world_.ensure(components::vorticity);
     for (auto& f : scene_.output_fields)
       if (!world_.has(f)) {
         std::string list;
@@ -305,6 +309,7 @@ class Runner {
     Profiler::Scope t(profiler_, slot_output_);
     char name[64];
     std::snprintf(name, sizeof name, "frames/frame_%05zu.h5", frames_.size());
+    if (world_.has(components::vorticity.name)) compute_vorticity(world_, context_);
     auto fields = write_frame<D>(out_ / name, world_, frame_fields_, time_, step_, run_id_);
     frames_.push_back({name, time_, world_.size(), fields});
     write_text_atomic(out_ / "particles.xdmf", xdmf_document(frames_));
