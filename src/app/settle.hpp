@@ -10,6 +10,7 @@
 // moving is not settled at all.
 #include <algorithm>
 #include <cstddef>
+#include <cstdio>
 #include <exception>
 #include <functional>
 #include <string>
@@ -86,7 +87,12 @@ SettleReport settle(Scheduler<D>& scheduler, World<D>& world, Resources& res, co
     }
     report.largest_displacement = largest / spacing;
     moved_away = largest > limit;
-    if (moved_away) report.refused = "not at rest (a particle moved more than max_displacement spacings)";
+    if (moved_away) {
+      char why[120];
+      std::snprintf(why, sizeof why, "not at rest: a particle moved %.3g spacings (the limit %.3g)",
+                    report.largest_displacement, s.max_displacement);
+      report.refused = why;
+    }
     if (progress) progress(report);
   }
   report.at_rest = !moved_away;
