@@ -2,6 +2,7 @@
 // issue 56): the kernel-corrected velocity gradient's curl, computed when a frame is written.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -69,4 +70,32 @@ TEST_CASE("vorticity: Taylor-Green's vorticity converges at second order") {
     if (previous > 0) CHECK(std::log2(previous / relative) > 1.8);
     previous = relative;
   }
+}
+
+// 3D: v = (-2 (y - 0.25), 2 (x - 0.25), 3 y), linear, so curl v = (3, 0, 4) /s at every particle of
+// the block, its faces and corners included (the frame stores the vector).
+TEST_CASE("vorticity: in 3D the frame holds the curl vector of a linear field at every particle") {
+  auto dir = test::unique_scratch("vorticity_3d");
+  test::write_text(
+      dir / "scene.toml",
+      "[scene]\ndimension = 3\n[domain]\nmin = [-0.3, -0.3, -0.3]\nmax = [0.6, 0.6, 0.6]\n"
+      "[particles]\nspacing = 0.025\n[material]\ndensity = 1000.0\n[method]\nname = \"wcsph\"\n"
+      "[physics]\ngravity = [0.0, 0.0, 0.0]\n[time]\nend = 0.0005\n[output]\nfields = [\"vorticity\"]\n"
+      "[[fluid]]\nmin = [0.0, 0.0, 0.0]\nmax = [0.25, 0.25, 0.25]\n"
+      "velocity = [\"-2*(y-0.25)\", \"2*(x-0.25)\", \"3*y\"]\n");
+  auto r = test::run_command(std::string(RYUSHI_BINARY) + " run " + (dir / "scene.toml").string() +
+                             " --quiet --out " + (dir / "out").string());
+  REQUIRE_MESSAGE(r.code == 0, r.output);
+  const auto frame = dir / "out" / "frames" / "frame_00000.h5";
+  auto w = test::read_dataset(frame, "vorticity").values, kind = test::read_dataset(frame, "kind").values;
+  REQUIRE(w.size() == 3 * kind.size());
+  double worst = 0;
+  std::size_t fluid = 0;
+  for (std::size_t i = 0; i < kind.size(); ++i)
+    if (kind[i] == 0)
+      worst = std::max({worst, std::abs(w[3 * i] - 3), std::abs(w[3 * i + 1]), std::abs(w[3 * i + 2] - 4)}),
+      ++fluid;
+  MESSAGE("3D: largest error of curl v over ", fluid, " particles: ", worst);
+  CHECK(fluid == 1000);
+  CHECK(worst < 1e-9);
 }

@@ -85,8 +85,7 @@ class Runner {
       if (std::find(frame_fields_.begin(), frame_fields_.end(), f) == frame_fields_.end())
         frame_fields_.push_back(f);
     // A field computed when a frame is written (systems/probes/vorticity_field.hpp).
-    if (std::count(frame_fields_.begin(), frame_fields_.end(), "vorticity"))
-      world_.ensure(components::vorticity);
+    if (std::count(frame_fields_.begin(), frame_fields_.end(), "vorticity")) vorticity_column(world_);
     for (auto& f : scene_.output_fields)
       if (!world_.has(f)) {
         std::string list;
@@ -309,7 +308,7 @@ class Runner {
     Profiler::Scope t(profiler_, slot_output_);
     char name[64];
     std::snprintf(name, sizeof name, "frames/frame_%05zu.h5", frames_.size());
-    if (world_.has(components::vorticity.name)) compute_vorticity(world_, context_);
+    if (world_.has("vorticity")) compute_vorticity(world_, context_);
     auto fields = write_frame<D>(out_ / name, world_, frame_fields_, time_, step_, run_id_);
     frames_.push_back({name, time_, world_.size(), fields});
     write_text_atomic(out_ / "particles.xdmf", xdmf_document(frames_));

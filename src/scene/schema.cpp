@@ -224,7 +224,7 @@ std::vector<SectionSpec> build() {
   s.push_back({"output", false, false, "What is written to the output directory.",
                {non_negative("interval", "s", "(end / 20)", "Simulated time between frames (frame 0 is the initial state). The step that crosses a frame time is shortened to land on it, so frame k is at exactly k * interval."),
                 {"fields", K::StringList, "", "[]",
-                 "Extra per-particle fields to write besides position, velocity, pressure, density, kind, id (e.g. \"acceleration\", \"density_rate\", \"mass\"; \"vorticity\", computed when a frame is written: 2D dv/dx - du/dy, 3D |curl v|, docs/output.md)."},
+                 "Extra per-particle fields to write besides position, velocity, pressure, density, kind, id (e.g. \"acceleration\", \"density_rate\", \"mass\"; \"vorticity\", computed when a frame is written: 2D dv/dx - du/dy, 3D the vector curl v, docs/output.md)."},
                 non_negative("probe_interval", "s", "(interval / 10)", "Simulated time between probe samples in probes.csv."),
                 non_negative("checkpoint_interval", "s", "0.0", "Simulated time between checkpoints (0: none): OUT/checkpoint.h5 holds the whole state, written atomically after the first step that reaches each multiple; `ryushi resume OUT` continues from it and gives the same result, bit for bit with the same thread count, as a run that was never stopped (docs/output.md). `ryushi run --checkpoint-interval T` overrides it.")}});
   s.push_back({"import", true, false,
