@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include "h5_read.hpp"
@@ -14,7 +15,17 @@ using namespace ryushi;
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
+
+// Runs a scene given as text and returns the path of its first frame (t = 0, before any step).
+std::filesystem::path first_frame(const std::string& label, const std::string& scene) {
+  auto dir = test::unique_scratch(label);
+  test::write_text(dir / "scene.toml", scene);
+  auto r = test::run_command(std::string(RYUSHI_BINARY) + " run " + (dir / "scene.toml").string() +
+                             " --quiet --out " + (dir / "out").string());
+  REQUIRE_MESSAGE(r.code == 0, r.output);
+  return dir / "out" / "frames" / "frame_00000.h5";
 }
+}  // namespace
 
 // A block turning rigidly at 2 rad/s clockwise, v = (omega (y - yc), -omega (x - xc)): a linear
 // field, which the corrected gradient reproduces at every particle, the block's edges and corners
@@ -22,19 +33,15 @@ constexpr double kPi = 3.14159265358979323846;
 TEST_CASE("vorticity: a rigid rotation reads -2 omega at every fluid particle, edges included") {
   for (std::string method : {"wcsph", "mps", "isph"}) {
     CAPTURE(method);
-    auto dir = test::unique_scratch("vorticity_" + method);
-    test::write_text(dir / "scene.toml",
-                     "[scene]\ndimension = 2\n[domain]\nmin = [-0.5, -0.5]\nmax = [1.0, 1.0]\n"
-                     "[particles]\nspacing = 0.0125\n[material]\ndensity = 1000.0\n"
-                     "[method]\nname = \"" +
-                         method +
-                         "\"\n[time]\nend = 0.0005\n"
-                         "[output]\nfields = [\"vorticity\"]\n"
-                         "[[fluid]]\nmin = [0.0, 0.0]\nmax = [0.5, 0.5]\nangular_velocity = 2.0\n");
-    auto r = test::run_command(std::string(RYUSHI_BINARY) + " run " + (dir / "scene.toml").string() +
-                               " --quiet --out " + (dir / "out").string());
-    REQUIRE_MESSAGE(r.code == 0, r.output);
-    const auto frame = dir / "out" / "frames" / "frame_00000.h5";
+    const auto frame =
+        first_frame("vorticity_" + method,
+                    "[scene]\ndimension = 2\n[domain]\nmin = [-0.5, -0.5]\nmax = [1.0, 1.0]\n"
+                    "[particles]\nspacing = 0.0125\n[material]\ndensity = 1000.0\n"
+                    "[method]\nname = \"" +
+                        method +
+                        "\"\n[time]\nend = 0.0005\n"
+                        "[output]\nfields = [\"vorticity\"]\n"
+                        "[[fluid]]\nmin = [0.0, 0.0]\nmax = [0.5, 0.5]\nangular_velocity = 2.0\n");
     auto w = test::read_dataset(frame, "vorticity").values, kind = test::read_dataset(frame, "kind").values;
     std::size_t fluid = 0;
     double worst = 0;
@@ -83,10 +90,6 @@ TEST_CASE("vorticity: in 3D the frame holds the curl vector of a linear field at
       "[physics]\ngravity = [0.0, 0.0, 0.0]\n[time]\nend = 0.0005\n[output]\nfields = [\"vorticity\"]\n"
       "[[fluid]]\nmin = [0.0, 0.0, 0.0]\nmax = [0.25, 0.25, 0.25]\n"
       "velocity = [\"-2*(y-0.25)\", \"2*(x-0.25)\", \"3*y\"]\n");
-  auto r = test::run_command(std::string(RYUSHI_BINARY) + " run " + (dir / "scene.toml").string() +
-                             " --quiet --out " + (dir / "out").string());
-  REQUIRE_MESSAGE(r.code == 0, r.output);
-  const auto frame = dir / "out" / "frames" / "frame_00000.h5";
   auto w = test::read_dataset(frame, "vorticity").values, kind = test::read_dataset(frame, "kind").values;
   REQUIRE(w.size() == 3 * kind.size());
   double worst = 0;
