@@ -82,9 +82,8 @@ TEST_CASE("vorticity: Taylor-Green's vorticity converges at second order") {
 // 3D: v = (-2 (y - 0.25), 2 (x - 0.25), 3 y), linear, so curl v = (3, 0, 4) /s at every particle of
 // the block, its faces and corners included (the frame stores the vector).
 TEST_CASE("vorticity: in 3D the frame holds the curl vector of a linear field at every particle") {
-  auto dir = test::unique_scratch("vorticity_3d");
-  test::write_text(
-      dir / "scene.toml",
+  const auto frame = first_frame(
+      "vorticity_3d",
       "[scene]\ndimension = 3\n[domain]\nmin = [-0.3, -0.3, -0.3]\nmax = [0.6, 0.6, 0.6]\n"
       "[particles]\nspacing = 0.025\n[material]\ndensity = 1000.0\n[method]\nname = \"wcsph\"\n"
       "[physics]\ngravity = [0.0, 0.0, 0.0]\n[time]\nend = 0.0005\n[output]\nfields = [\"vorticity\"]\n"
