@@ -6,6 +6,7 @@
 
 #include "app/exit_codes.hpp"
 #include "app/run.hpp"
+#include "shipped_scene_run.hpp"
 #include "test_util.hpp"
 
 using namespace ryushi;
@@ -277,4 +278,32 @@ TEST_CASE("probes: a line without points, with points but no end, or ending outs
       "[[probe]]\nname = \"h\"\ntype = \"water_height\"\nposition = [0.25, 0.05]\nend = [0.3, 0.05]\npoints "
       "= 3\n",
       "a line (`end`) is for pressure and velocity probes");
+}
+
+// A force probe with reference_speed U and reference_length L reads the coefficient F / (rho0 U^2
+// L / 2) (2D): beside the raw force on the same body, sample by sample, the ratio is rho0 U^2 L / 2
+// = 1000 (U = 2 m/s, L = 0.5 m) to round-off; one of the two keys alone, or on another probe type,
+// exits 2 at the key.
+TEST_CASE("probes: a force probe with a reference speed and length reads the force coefficient") {
+  const std::string probes =
+      "[[probe]]\nname = \"fy\"\ntype = \"force\"\nsolid = \"tank\"\naxis = 1\n"
+      "[[probe]]\nname = \"cy\"\ntype = \"force\"\nsolid = \"tank\"\naxis = 1\n"
+      "reference_speed = 2.0\nreference_length = 0.5\n";
+  const auto out = test::run_shipped_scene("probe_force_coefficient", "round_tank_2d.toml", probes,
+                                           {"time.end=0.01", "output.probe_interval=0.002"});
+  auto csv = test::read_csv(out / "probes.csv");
+  REQUIRE(csv["fy"].size() >= 5);
+  for (std::size_t k = 0; k < csv["fy"].size(); ++k) {
+    CAPTURE(k);
+    REQUIRE(std::abs(csv["fy"][k]) > 100);  // the water's weight on the tank, about 1 kN/m
+    CHECK(csv["cy"][k] * 1000 == doctest::Approx(csv["fy"][k]).epsilon(1e-12));
+  }
+  auto dir = test::scratch("probe_force_coefficient_bad");
+  const auto scene = test::read_text(test::scene_path("round_tank_2d.toml"));
+  check_bad_scene(
+      dir, scene + "\n[[probe]]\nname = \"c\"\ntype = \"force\"\nsolid = \"tank\"\nreference_speed = 2.0\n",
+      "a force coefficient needs both reference_speed and reference_length");
+  check_bad_scene(dir,
+                  scene + "\n[[probe]]\nname = \"c\"\ntype = \"kinetic_energy\"\nreference_length = 0.5\n",
+                  "reference_speed and reference_length are for force probes");
 }

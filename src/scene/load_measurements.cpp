@@ -118,7 +118,20 @@ void load_measurements(toml::table& root, Validator& val, Scene& sc) {
         if (p.axis >= D)
           val.fail(at.where("probe", i, "axis"), path_of("probe", i, "axis"),
                    "[[probe]] '" + p.name + "': axis must be below the dimension");
+        p.reference_speed = root["probe"][i]["reference_speed"].value_or(0.0);
+        p.reference_length = root["probe"][i]["reference_length"].value_or(0.0);
+        if ((p.reference_speed > 0) != (p.reference_length > 0))
+          val.fail(at.where("probe", i, p.reference_speed > 0 ? "reference_speed" : "reference_length"),
+                   path_of("probe", i, p.reference_speed > 0 ? "reference_speed" : "reference_length"),
+                   "[[probe]] '" + p.name +
+                       "': a force coefficient needs both reference_speed and reference_length");
       }
+      if (p.type != "force" && (root["probe"][i]["reference_speed"] || root["probe"][i]["reference_length"]))
+        val.fail(
+            at.where("probe", i,
+                     root["probe"][i]["reference_speed"] ? "reference_speed" : "reference_length"),
+            path_of("probe", i, root["probe"][i]["reference_speed"] ? "reference_speed" : "reference_length"),
+            "[[probe]] '" + p.name + "': reference_speed and reference_length are for force probes");
       if (p.type == "solid_displacement" || p.type == "solid_stress" || p.type == "velocity") {
         p.axis = static_cast<int>(*root["probe"][i]["axis"].value<long long>());
         if (p.axis >= D)

@@ -105,6 +105,8 @@ struct ProbeSpec {
   int solid = -1, axis = 0;  // force: the [[solid]]'s index and the component
   std::vector<double> normal;  // wall_pressure
   double diameter = 0;         // wall_pressure
+  // force: with both > 0 the probe reads the coefficient F / (rho0 U^2 L^(D-1) / 2) (drag, lift)
+  double reference_speed = 0, reference_length = 0;
   // "file:line:col" of `position` and `normal`, for what only the particles can show (a sensor
   // off any wall, a normal into the wall: checked when the run starts).
   std::string position_where, normal_where;

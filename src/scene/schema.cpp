@@ -346,6 +346,12 @@ std::vector<SectionSpec> build() {
             "wall_pressure: the width of the sensor's face (a disc in 3D, a segment across the normal in 2D; "
             "required). Experiments' sensors are a few mm wide; the reading is averaged over the face."),
         {"solid", K::String, "", "", "force: the [[solid]] (its name) the fluid pushes on."},
+        positive("reference_speed", "m/s", "",
+                 "force, with reference_length: the probe reads the force coefficient F / (rho0 U^2 L / 2) "
+                 "(2D, F per unit depth; 3D: F / (rho0 U^2 L^2 / 2)) instead of the force: the drag (axis "
+                 "along the flow) and lift coefficients of a body of size L in a stream of speed U."),
+        positive("reference_length", "m", "",
+                 "force, with reference_speed: the body's size L (a cylinder's diameter) in the coefficient."),
         ranged({"axis", K::Integer, "", "0",
                 "force, solid_displacement, solid_stress, velocity: the component (0 = x, 1 = y, 2 = z)."},
                0, 2)}});

@@ -207,7 +207,7 @@ std::vector<double> sample_probes(const std::vector<Probe>& probes, const World<
                 solid_force<D>(probe.solid, world, kernel, domain, cells.fluid, /*with_pressure=*/false);
       } else
         force = solid_surface_force<D>(probe.solid, world, kernel, domain, gravity, surface);
-      out.push_back(force[probe.axis]);
+      out.push_back(force[probe.axis] * probe.scale);
     } else if (probe.type == "solid_displacement" || probe.type == "solid_stress") {
       // The elastic particle that started nearest the probe.
       auto& rest = world.column(components::rest_position);

@@ -48,6 +48,7 @@ struct Probe {
   int solid = -1, axis = 0;    // force: the [[solid]]'s index and the component (also velocity)
   std::vector<double> normal;  // wall_pressure: out of the wall, into the fluid (unit)
   double diameter = 0;         // wall_pressure: the sensor face's
+  double scale = 1;            // force: what the reading is multiplied by (1 / (rho0 U^2 L^(D-1) / 2))
 };
 
 // Why each wall_pressure probe cannot read a wall, by the probe's index (empty where it can).
