@@ -62,6 +62,8 @@ inline KeySpec choice(std::string key, std::string def, std::string doc, std::ve
 }  // namespace keyspec
 
 const std::vector<SectionSpec>& scene_schema();
+// The [[probe]] section (scene/schema_probe.cpp), part of scene_schema().
+SectionSpec probe_section();
 const SectionSpec* find_section(const std::string& name);
 const KeySpec* find_key(const std::vector<KeySpec>& keys, const std::string& key);
 std::string type_name(KeyType t);
