@@ -5,7 +5,6 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -21,21 +20,10 @@ struct GhiaPoint {
 };
 
 std::vector<GhiaPoint> ghia_re100() {
-  std::ifstream in(std::string(RYUSHI_SOURCE_DIR) + "/tools/reference/ghia_1982_re100.csv");
-  REQUIRE(in);
+  auto table = test::read_csv(test::source_dir() / "tools" / "reference" / "ghia_1982_re100.csv");
   std::vector<GhiaPoint> points;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    GhiaPoint p{};
-    REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &p.y, &p.u, &p.x, &p.v) == 4);
-    points.push_back(p);
-  }
+  for (std::size_t k = 0; k < table["y"].size(); ++k)
+    points.push_back({table["y"][k], table["u"][k], table["x"][k], table["v"][k]});
   REQUIRE(points.size() == 17);
   return points;
 }

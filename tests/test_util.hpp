@@ -115,7 +115,9 @@ inline Csv read_csv(const fs::path& p) {
   std::ifstream in(p);
   REQUIRE_MESSAGE(in.good(), "cannot open " << p);
   std::string line;
-  std::getline(in, line);
+  // The header follows any '#' comment lines (tools/reference/ tables carry their source so).
+  while (std::getline(in, line) && (line.empty() || line[0] == '#')) {
+  }
   std::vector<std::string> names;
   std::stringstream hs(line);
   for (std::string n; std::getline(hs, n, ',');) names.push_back(n);
