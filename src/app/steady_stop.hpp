@@ -40,11 +40,10 @@ class SteadyStop {
   bool enabled() const { return tolerance_ > 0; }
 
   // After a step at time t with kinetic energy e: true once |e - e(t - window)| <= tolerance
-  // max(e, e(t - window)) with the window inside the run (not before t = window, or t = 10 steps'
-  // time when the window is a tenth of the run). `message` then says so.
+  // max(e, e(t - window)), the window inside the run and ten steps long at least. `message` then
+  // says so.
   bool reached(double t, double e) {
     history_.emplace_back(t, e);
-    if (history_.size() < 10) return false;
     const double window = window_ > 0 ? window_ : 0.1 * t;
     const double since = t - window;
     if (since < history_.front().first) return false;

@@ -74,6 +74,26 @@ std::vector<ProbeSpec> line_of_probes(toml::table& root, Validator& val, const S
   return line;
 }
 
+// A force probe's reference_speed and reference_length (both or neither); on another type either
+// is bad input at that key.
+void load_force_coefficient(toml::table& root, Validator& val, const SceneEntries& at, std::size_t i,
+                            ProbeSpec& p) {
+  auto entry = root["probe"][i];
+  const char* given = entry["reference_speed"] ? "reference_speed" : "reference_length";
+  if (p.type != "force") {
+    if (entry["reference_speed"] || entry["reference_length"])
+      val.fail(at.where("probe", i, given), path_of("probe", i, given),
+               "[[probe]] '" + p.name + "': reference_speed and reference_length are for force probes");
+    return;
+  }
+  p.reference_speed = entry["reference_speed"].value_or(0.0);
+  p.reference_length = entry["reference_length"].value_or(0.0);
+  if ((p.reference_speed > 0) != (p.reference_length > 0))
+    val.fail(
+        at.where("probe", i, given), path_of("probe", i, given),
+        "[[probe]] '" + p.name + "': a force coefficient needs both reference_speed and reference_length");
+}
+
 // Appends a probe; two of one name are bad input at the [[probe]]'s name.
 void add_probe(Scene& sc, Validator& val, const SceneEntries& at, std::size_t i, ProbeSpec p) {
   for (auto& q : sc.probes)
@@ -114,30 +134,15 @@ void load_measurements(toml::table& root, Validator& val, Scene& sc) {
         if (p.solid < 0)
           val.fail(at.where("probe", i, "solid"), path_of("probe", i, "solid"),
                    "[[probe]] '" + p.name + "': there is no [[solid]] named '" + *solid_name + "'");
-        p.axis = static_cast<int>(*root["probe"][i]["axis"].value<long long>());
-        if (p.axis >= D)
-          val.fail(at.where("probe", i, "axis"), path_of("probe", i, "axis"),
-                   "[[probe]] '" + p.name + "': axis must be below the dimension");
-        p.reference_speed = root["probe"][i]["reference_speed"].value_or(0.0);
-        p.reference_length = root["probe"][i]["reference_length"].value_or(0.0);
-        if ((p.reference_speed > 0) != (p.reference_length > 0))
-          val.fail(at.where("probe", i, p.reference_speed > 0 ? "reference_speed" : "reference_length"),
-                   path_of("probe", i, p.reference_speed > 0 ? "reference_speed" : "reference_length"),
-                   "[[probe]] '" + p.name +
-                       "': a force coefficient needs both reference_speed and reference_length");
       }
-      if (p.type != "force" && (root["probe"][i]["reference_speed"] || root["probe"][i]["reference_length"]))
-        val.fail(
-            at.where("probe", i,
-                     root["probe"][i]["reference_speed"] ? "reference_speed" : "reference_length"),
-            path_of("probe", i, root["probe"][i]["reference_speed"] ? "reference_speed" : "reference_length"),
-            "[[probe]] '" + p.name + "': reference_speed and reference_length are for force probes");
-      if (p.type == "solid_displacement" || p.type == "solid_stress" || p.type == "velocity") {
+      if (p.type == "force" || p.type == "solid_displacement" || p.type == "solid_stress" ||
+          p.type == "velocity") {
         p.axis = static_cast<int>(*root["probe"][i]["axis"].value<long long>());
         if (p.axis >= D)
           val.fail(at.where("probe", i, "axis"), path_of("probe", i, "axis"),
                    "[[probe]] '" + p.name + "': axis must be below the dimension");
       }
+      load_force_coefficient(root, val, at, i, p);
       if (auto line = line_of_probes(root, val, at, i, p); !line.empty()) {
         for (auto& q : line) add_probe(sc, val, at, i, std::move(q));
         continue;
