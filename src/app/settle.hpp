@@ -46,7 +46,7 @@ SettleReport settle(Scheduler<D>& scheduler, World<D>& world, Resources& res, co
   SettleReport report;
   if (s.steps <= 0) return report;
   // The columns a step writes that decide the next one: restored if the fluid was not at rest.
-  const auto kind = world.column(components::kind);
+  const auto& kind = world.column(components::kind);  // no step changes it
   const auto x0 = world.column(components::position);
   const auto v0 = world.column(components::velocity);
   const bool has_pressure = world.has(components::pressure.name);
