@@ -36,7 +36,10 @@ void Runner<D>::advance() {
   }
   restored_order_.clear();
   double& dt = res_.get(resources::dt);
-  if (scene_.fixed_dt > 0) dt = scene_.fixed_dt;
+  if (scene_.fixed_dt > 0)
+    dt = scene_.fixed_dt;
+  else if (res_.has(resources::dt_limit.name))
+    dt = std::min(dt, res_.get(resources::dt_limit));
   if (!(dt >= scene_.dt_min))
     throw NumericalFailure("step " + std::to_string(step_) + " (t = " + fmt(time_) + " s): time step " +
                            fmt(dt) + " s fell below time.dt_min = " + fmt(scene_.dt_min) +

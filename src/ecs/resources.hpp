@@ -62,6 +62,9 @@ inline constexpr Resource<double> dt{"dt"};
 // the end time. A projection whose pressure scales with 1/dt^2 scales it with this one, so a
 // shortened step does not change the pressure (only how much of it the step applies).
 inline constexpr Resource<double> dt_chosen{"dt_chosen"};
+// The largest step a system allows whatever the flow's speed (a capillary wave's), set once in
+// its initialise; the driver shortens the time-step control's step to it. Absent: no limit.
+inline constexpr Resource<double> dt_limit{"dt_limit"};
 inline constexpr Resource<double> time{"time"};
 inline constexpr Resource<long long> step{"step"};  // steps completed before this one
 }  // namespace resources

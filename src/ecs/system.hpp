@@ -89,6 +89,10 @@ class System {
   // (initial conditions) and create resources.
   virtual void initialise(World<D>&, Resources&) {}
   virtual void run(SystemContext<D>& ctx) = 0;
+  // A system added by a scene ([[systems]]) goes after the method's last system unless it names
+  // the one it must follow (surface tension acts between the free-surface detection and the
+  // pressure rows that read it); the method's step must then hold a system of that name.
+  virtual std::string place_after() const { return {}; }
   // Checkpoints: what a system keeps between steps that no column holds (a Verlet list's
   // reference positions), as numbers, and its restore after the columns are back. Systems that
   // keep nothing leave both alone.

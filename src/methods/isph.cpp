@@ -21,6 +21,7 @@
 #include "methods/isph_spec.hpp"
 #include "methods/method.hpp"
 #include "methods/scene_particles.hpp"
+#include "scene/registered_keys.hpp"
 #include "systems/fluid/pair_collision.hpp"
 #include "systems/integrate/velocity_time_step.hpp"
 #include "systems/isph/fixed_pressure_velocity.hpp"
@@ -79,6 +80,9 @@ IsphParameters<D> isph_parameters(const Scene& s) {
   p.wall_acceleration = std::any_of(s.solids.begin(), s.solids.end(), [](const SolidSpec& b) { return b.moves(); });
   for (const auto& b : s.solids) p.moving_bodies.push_back(b.moves());
   p.fixed_pressure = !s.fixed_pressure.empty();
+  for (auto& extra : s.systems)  // a system that sets the surface's Dirichlet values (surface tension)
+    for (auto& need : find_system_keys(extra.name)->needs)
+      p.surface_pressure |= need == "free_surface_pressure";
   p.cfl = s.cfl;
   double u = std::sqrt(2.0 * s.gravity_magnitude() * s.fluid_height());
   p.reference_speed = u > 0 ? u : 1e-9;

@@ -265,6 +265,13 @@ MethodSpec isph_spec() {
   spec.hooks.resolve = resolve;
   spec.hooks.wall_layers = wall_layers;
   spec.hooks.validate = validate;
+  // The projection's free-surface rows take the Dirichlet value a system writes (surface
+  // tension); the implicit density formulation and a confined fluid have no such rows.
+  spec.hooks.provides = [](const Scene& sc) {
+    return implicit_density(sc) || sc.method_params.flag("confined")
+               ? std::vector<std::string>{}
+               : std::vector<std::string>{"free_surface_pressure"};
+  };
   return spec;
 }
 

@@ -1,5 +1,6 @@
 #include "methods/method.hpp"
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 
@@ -66,8 +67,22 @@ MethodSetup<D> build_method(const Scene& s, World<D>& world, const PipelineOptio
   for (auto& system : m.pipeline)
     if (auto* search = dynamic_cast<const NeighbourSearch<D>*>(system.get()))
       m.search_cell = search->cell_size();
-  // The scene's registered [[systems]] go last; the scheduler places them by their access.
-  for (auto& extra : s.systems) m.pipeline.push_back(make_registered_system<D>(extra.name, extra.params, m.context));
+  // The scene's registered [[systems]] go last, or right after the system they name; the
+  // scheduler places them by their access.
+  for (auto& extra : s.systems) {
+    auto system = make_registered_system<D>(extra.name, extra.params, m.context);
+    const std::string after = system->place_after();
+    if (after.empty()) {
+      m.pipeline.push_back(std::move(system));
+      continue;
+    }
+    auto it =
+        std::find_if(m.pipeline.rbegin(), m.pipeline.rend(), [&](auto& p) { return p->name() == after; });
+    if (it == m.pipeline.rend())  // the loader's `needs` check refuses such a scene first
+      throw std::invalid_argument("system '" + extra.name + "' must follow '" + after + "', which method '" +
+                                  s.method + "' does not run with this scene's keys");
+    m.pipeline.insert(it.base(), std::move(system));
+  }
   return m;
 }
 

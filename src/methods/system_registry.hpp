@@ -22,6 +22,7 @@ namespace ryushi {
 struct SystemRegistryEntry {
   std::string doc;
   std::vector<KeySpec> params;
+  std::vector<std::string> needs;  // what the method must provide (SystemKeys::needs)
   std::function<SystemPtr<2>(const toml::table&, const MethodContext<2>&)> make2;
   std::function<SystemPtr<3>(const toml::table&, const MethodContext<3>&)> make3;
 };
@@ -44,8 +45,9 @@ SystemPtr<D> make_registered_system(const std::string& name, const toml::table& 
 }
 
 template <template <int> class T>
-SystemRegistryEntry registry_entry(std::string doc, std::vector<KeySpec> params) {
-  return {std::move(doc), std::move(params),
+SystemRegistryEntry registry_entry(std::string doc, std::vector<KeySpec> params,
+                                   std::vector<std::string> needs = {}) {
+  return {std::move(doc), std::move(params), std::move(needs),
           [](const toml::table& p, const MethodContext<2>& w) { return std::make_shared<T<2>>(p, w); },
           [](const toml::table& p, const MethodContext<3>& w) { return std::make_shared<T<3>>(p, w); }};
 }

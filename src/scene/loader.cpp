@@ -1,5 +1,6 @@
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -266,6 +267,14 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   load_heat_and_rheology(root, val, sc);
   load_elastic(root, val, sc);
   if (hooks.validate) hooks.validate(sc, root, val);
+  // A [[systems]] entry that needs what this method (with these keys) does not provide.
+  const auto provided = hooks.provides ? hooks.provides(sc) : std::vector<std::string>{};
+  for (std::size_t i = 0; i < sc.systems.size(); ++i)
+    for (auto& need : find_system_keys(sc.systems[i].name)->needs)
+      if (std::find(provided.begin(), provided.end(), need) == provided.end())
+        val.fail(root["systems"][i]["name"].node(), "systems." + std::to_string(i) + ".name",
+                 "system '" + sc.systems[i].name + "' needs " + need + ", which method '" + sc.method +
+                     "' does not provide with this scene's [method] keys");
   // The neighbour search's cell grid covers the domain with cells of the support radius (4
   // bytes per cell): a domain far larger than the particles' extent at a tiny spacing (1e-6 m
   // particles in a 1e4 m box) would ask for more memory than the machine has.

@@ -85,6 +85,9 @@ struct MethodHooks {
   std::function<int(const Scene&)> wall_layers;
   // After the whole scene is read: the checks across sections (geometry, probes) of the method.
   std::function<void(const Scene&, const toml::table& root, Validator&)> validate;
+  // What the method's step offers the [[systems]] that need it (SystemKeys::needs), given the
+  // scene's [method] keys; unset: nothing.
+  std::function<std::vector<std::string>(const Scene&)> provides;
 };
 
 struct MethodSpec {
@@ -111,9 +114,12 @@ const MethodSpec* find_method_spec(const std::string& name);
 std::vector<std::string> methods_owning_key(const std::string& key);
 
 // A registered system's [[systems]] keys (besides name) and its line for docs/scenes.md.
+// `needs`: what the scene's method must provide for the system to run (MethodHooks::provides),
+// e.g. "free_surface_pressure": free-surface rows whose Dirichlet value a system may set.
 struct SystemKeys {
   std::string doc;
   std::vector<KeySpec> keys;
+  std::vector<std::string> needs{};
 };
 bool register_system_keys(const std::string& name, SystemKeys keys);  // as register_method_spec
 void unregister_system_keys(const std::string& name);

@@ -23,6 +23,7 @@ struct KeySpec {
   std::optional<double> min{};
   std::optional<double> max{};
   bool min_exclusive = false;
+  bool max_exclusive = false;
   std::vector<std::string> choices{};
 };
 

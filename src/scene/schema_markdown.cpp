@@ -24,7 +24,7 @@ void key_table(std::ostringstream& out, const std::vector<KeySpec>& keys) {
   for (auto& k : keys) {
     std::string range;
     if (k.min) range += std::string(k.min_exclusive ? " > " : " >= ") + shortest(*k.min);
-    if (k.max) range += " <= " + shortest(*k.max);
+    if (k.max) range += std::string(k.max_exclusive ? " < " : " <= ") + shortest(*k.max);
     if (!k.choices.empty()) {
       range = " one of:";
       for (auto& c : k.choices) range += " `" + c + "`";

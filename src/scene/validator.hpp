@@ -86,13 +86,13 @@ class Validator {
     auto check_range = [&](double v) {
       if (!std::isfinite(v)) fail(&node, path, "'" + spec.key + "' in " + label + " must be finite");
       bool low = spec.min && (spec.min_exclusive ? v <= *spec.min : v < *spec.min);
-      bool high = spec.max && v > *spec.max;
+      bool high = spec.max && (spec.max_exclusive ? v >= *spec.max : v > *spec.max);
       if (low || high) {
         std::ostringstream m;
         m << "'" << spec.key << "' in " << label << " is " << v << "; it must be";
         if (spec.min) m << (spec.min_exclusive ? " > " : " >= ") << *spec.min;
         if (spec.min && spec.max) m << " and";
-        if (spec.max) m << " <= " << *spec.max;
+        if (spec.max) m << (spec.max_exclusive ? " < " : " <= ") << *spec.max;
         fail(&node, path, m.str());
       }
     };

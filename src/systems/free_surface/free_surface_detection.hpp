@@ -31,6 +31,10 @@ namespace ryushi {
 namespace components {
 inline constexpr Component<Flags> free_surface{"free_surface"};      // 1 on the free surface
 inline constexpr Component<Vector> surface_normal{"surface_normal"};  // unit, out of the fluid
+// The Dirichlet value of a free-surface particle's pressure row where a system sets one (surface
+// tension's Laplace pressure), Pa; read by the pressure rows of methods that provide
+// "free_surface_pressure".
+inline constexpr Component<Scalar> surface_pressure{"surface_pressure"};
 }  // namespace components
 
 enum class FreeSurfaceRule { Marrone, Isph2, Mps };

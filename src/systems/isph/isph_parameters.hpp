@@ -83,6 +83,7 @@ struct IsphParameters {
   std::vector<bool> moving_bodies;
   bool implicit_density = false;  // formulation = "implicit_density" (implicit_density_solve.hpp)
   bool fixed_pressure = false;  // the scene has [[fixed_pressure]] boxes (the column exists)
+  bool surface_pressure = false;  // a system sets the free surface's Dirichlet values
   double cfl = 0.2;
   double reference_speed = 1;  // sqrt(2 g H); bounds the step only without gravity
 

@@ -1,9 +1,11 @@
 #pragma once
 // Assembles the ISPH pressure equation (ISPH paper eq. 18) at the predicted positions x*:
-//   fluid, free surface          p = 0 at the surface: with free_surface_pressure = extrapolated
-//                                p_i + d/2 N_i . <grad p>_i = 0 (the surface lies half a spacing
+//   fluid, free surface          p = p_s at the surface (0, or the Laplace pressure a surface
+//                                tension system writes in surface_pressure): with
+//                                free_surface_pressure = extrapolated
+//                                p_i + d/2 N_i . <grad p>_i = p_s (the surface lies half a spacing
 //                                outside the particle's centre, along its normal N_i; where
-//                                det M_i < 0.2, a splash, and with = particle: p_i = 0, no row,
+//                                det M_i < 0.2, a splash, and with = particle: p_i = p_s, no row,
 //                                as eq. 18 writes it)
 //   fluid, interior              -<lap p>_i = -rho0/dt <div v*>_i                      (eq. 5)
 //   wetted wall                  n_i . <grad p>_i = rho0/dt (v*_i - v_wall,i) . n_i     (eq. 17)
@@ -37,6 +39,7 @@
 #include "systems/free_surface/free_surface_detection.hpp"
 #include "systems/isph/compression_density.hpp"
 #include "systems/isph/isph_parameters.hpp"
+#include "systems/isph/wetted_neighbours.hpp"
 #include "systems/loops/for_each_particle.hpp"
 #include "systems/neighbour/neighbour_list.hpp"
 #include "systems/operators/gradient.hpp"
@@ -60,7 +63,8 @@ class IsphPressureEquation final : public System<D> {
               writes(pressure_system_resource, pressure_neighbours_resource),
               optional(p_.fixed_pressure, reads(components::fixed_pressure)),
               optional((p_.wall_adami || p_.wall_shepard_hydrostatic) && p_.wall_acceleration,
-                       reads(components::body_acceleration))};
+                       reads(components::body_acceleration)),
+              optional(p_.surface_pressure, reads(components::surface_pressure))};
   }
   Access access() const override { return io().access(); }
   void initialise(World<D>&, Resources& res) override {
@@ -71,14 +75,18 @@ class IsphPressureEquation final : public System<D> {
   void run(SystemContext<D>& ctx) override {
     // dt: the step's own (the source is the motion it integrates). fixed: Dirichlet values other
     // than 0 (moved to b); acceleration: a moving body's, for the wall rows. Empty if none.
+    // surface_value: the free surface's Dirichlet values (a surface tension's Laplace pressure).
     auto [x, v, m, rho, kind, id, surface, surface_normal, normal, full, dt, sys, pressure_neighbours, fixed,
-          acceleration] = io().fetch(ctx);
+          acceleration, surface_value] = io().fetch(ctx);
     const std::size_t n = x.size();
     particle_volumes(m, rho, volume_);
     ParticleView<D> full_view{x, volume_, full, p_.kernel, p_.domain};
     const double h = p_.kernel.h(), support = p_.kernel.support(), d = p_.spacing;
     const double shell = 1.1 * std::sqrt(double(D)) * d;
-    auto known = [&](std::size_t j) { return fixed.empty() || !std::isfinite(fixed[j]) ? 0.0 : fixed[j]; };
+    auto known = [&](std::size_t j) {
+      if (!fixed.empty() && std::isfinite(fixed[j])) return fixed[j];
+      return surface_value.empty() ? 0.0 : surface_value[j];  // 0 off the surface
+    };
 
     // Which particles carry an unknown: interior fluid, extrapolated surface fluid, wetted walls.
     unknown_.assign(n, 0);
@@ -119,7 +127,7 @@ class IsphPressureEquation final : public System<D> {
         }
       }
     });
-    const auto& nl = restrict_to_wetted(kind, full, pressure_neighbours);
+    const auto& nl = restrict_to_wetted(kind, unknown_, full, pressure_neighbours);
     ParticleView<D> view{x, volume_, nl, p_.kernel, p_.domain};
     // v* seen at wall particles: the Shepard interpolation of their fluid neighbours' v*, used in
     // the Neumann rows and in the fluid rows' divergence. With the wall's own (zero) velocity
@@ -220,7 +228,7 @@ class IsphPressureEquation final : public System<D> {
             else
               from_known -= along * known(nb[k]);
           }
-          rhs = 0;
+          rhs = known(i) / (d * d);
         } else if (kind[i] == kFluid) {
           bool corrected = false;  // the divergence: corrected weights, or V_k gW_k where M_i is poor
           if (kept) {
@@ -332,7 +340,7 @@ class IsphPressureEquation final : public System<D> {
           if (!(diagonal > 0.1 * scale)) {
             entries.clear();
             diagonal = 1.0 / (d * d);
-            rhs = 0;
+            rhs = kind[i] == kFluid ? known(i) / (d * d) : 0.0;
           }
         } else if (!(diagonal > 0)) {
           bad_row = std::min(bad_row, r);  // even the standard weights: particles on top of each other
@@ -377,6 +385,9 @@ class IsphPressureEquation final : public System<D> {
     if (!fixed.empty())
       for (std::size_t i = 0; i < n; ++i)
         if (std::isfinite(fixed[i])) sys.fixed_values.emplace_back(static_cast<std::uint32_t>(i), fixed[i]);
+    for (std::size_t i = 0; i < n && !surface_value.empty(); ++i)  // surface particles without a row
+      if (kind[i] == kFluid && surface[i] && !unknown_[i] && (fixed.empty() || !std::isfinite(fixed[i])))
+        sys.fixed_values.emplace_back(static_cast<std::uint32_t>(i), surface_value[i]);
     sys.dimension = D;
     sys.bucket_width = support;
     sys.symmetric = false;
@@ -387,35 +398,6 @@ class IsphPressureEquation final : public System<D> {
   }
 
  private:
-  // The list without dry walls (kind wall, no unknown): they drop out of every stencil.
-  const NeighbourList& restrict_to_wetted(std::span<const std::int32_t> kind, const NeighbourList& full,
-                                          NeighbourList& out) const {
-    const std::size_t n = full.size();
-    auto keeps = [&](std::size_t j) { return kind[j] != kWall || unknown_[j]; };
-    out.radius = full.radius;
-    out.offsets.assign(n + 1, 0);
-    out.ends.clear();  // packed
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](auto range) {
-      for (std::size_t i = range.begin(); i != range.end(); ++i) {
-        std::uint32_t c = 0;
-        if (keeps(i))
-          for (auto j : full.of(i)) c += keeps(j);
-        out.offsets[i + 1] = c;
-      }
-    });
-    for (std::size_t i = 0; i < n; ++i) out.offsets[i + 1] += out.offsets[i];
-    out.indices.resize(out.offsets[n]);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](auto range) {
-      for (std::size_t i = range.begin(); i != range.end(); ++i) {
-        if (!keeps(i)) continue;
-        auto k = out.offsets[i];
-        for (auto j : full.of(i))
-          if (keeps(j)) out.indices[k++] = j;
-      }
-    });
-    return out;
-  }
-
   [[noreturn]] void report_bad_row(std::span<const std::int32_t> kind, std::span<const std::int32_t> id,
                                    std::size_t i, std::span<const Vec<D>> x) const {
     std::ostringstream m;
