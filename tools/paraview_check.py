@@ -23,7 +23,8 @@ import sys
 from paraview import simple as pv  # noqa: E402  (ParaView's own module)
 
 READERS = ["XDMFReader", "Xdmf3ReaderS", "Xdmf3ReaderT", "OpenDataFile"]
-VECTORS = {"position": 3, "velocity": 3, "acceleration": 3, "surface_normal": 3, "displacement": 3}
+VECTORS = {"position": 3, "velocity": 3, "acceleration": 3, "surface_normal": 3, "displacement": 3,
+           "tension_normal": 3}
 
 
 def fail(reader, what):

@@ -59,7 +59,11 @@ check cooling "$work/cooling" 0,0.05,0.1 --arrays velocity,pressure,kind,id,temp
   --set output.interval=0.02
 check elastic "$work/elastic" 0,0.02,0.04 --tensors stress --arrays velocity,kind,id,displacement,solid_pressure \
   --color displacement
-echo "test-paraview: 8 particle sets x 4 readers passed; screenshots in $images"
+# Surface tension (docs/surface_tension.md): curvature, the Laplace pressure, the normal (a vector).
+"$ryushi" run scenes/square_drop_2d.toml --out "$work/square_drop" --quiet --end-time 0.008
+check square_drop "$work/square_drop" 0,0.004,0.008 --arrays velocity,pressure,curvature,surface_pressure,tension_normal \
+  --color surface_pressure
+echo "test-paraview: 9 particle sets x 4 readers passed; screenshots in $images"
 
 # Pictures without ParaView: every frame and a movie, a 3D slice, and a clean refusal.
 "$ryushi" render "$work/wcsph" --movie >/dev/null
