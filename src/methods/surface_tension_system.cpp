@@ -24,6 +24,7 @@ SurfaceTensionParameters surface_tension_parameters(const toml::table& t) {
   if (auto theta = t["contact_angle"].value<double>()) p.contact_angle = *theta;
   p.capillary_step = *t["capillary_step"].value<double>();
   p.min_radius = *t["min_radius"].value<double>();
+  p.viscous_normal_stress = *t["viscous_normal_stress"].value<bool>();
   return p;
 }
 
@@ -45,8 +46,9 @@ std::vector<KeySpec> surface_tension_keys() {
       keyspec::positive("sigma", "N/m", "", "Surface tension coefficient sigma.", true),
       keyspec::choice(
           "curvature", "\"fit\"",
-          "fit: kappa = div N / 2 of the quadratic h(s) fitted by weighted least squares (one trimming "
-          "pass) to the particle and its surface neighbours' positions in the frame of its normal, "
+          "fit: kappa = div N / 2 of the quadratic h(s) fitted by weighted least squares (refitted once "
+          "with Tukey's biweight of the residuals) to the particle and its surface neighbours' positions in "
+          "the frame of its normal, "
           "taken half a spacing outside the particles (systems/surface_tension/curvature_fit.hpp); "
           "tangential: div_s N / 2 of the normals along the surface, corrected on the surface "
           "neighbours (tangential_divergence.hpp); paper: eq. 27 with curvature_factor. Measured on the "
@@ -73,6 +75,10 @@ std::vector<KeySpec> surface_tension_keys() {
           "capillary_step", "", "0.5",
           "C of the capillary step limit dt <= C sqrt(rho0 d^3 / (2 pi sigma)) (Brackbill et al. "
           "1992), applied to the method's step control."),
+      KeySpec{"viscous_normal_stress", KeyType::Bool, "", "true",
+              "The surface rows' value is the whole normal stress balance, p_s = 2 sigma kappa + 2 mu N . "
+              "grad(v) "
+              "N (the predicted velocity's corrected gradient): false keeps the Laplace pressure alone."},
       keyspec::positive(
           "min_radius", "spacings", "3",
           "The smallest radius of curvature the surface takes: |kappa| is clamped to (D - 1) / (2 "

@@ -17,10 +17,10 @@
 
 namespace ryushi {
 
-// One trimming pass: a surface neighbour whose height is more than `trim` (d/2) off the first
-// fit is on another layer (a particle of the second row that the detection also flagged, which
-// held a viscous drop's outline as a rounded polygon 4% off the circle's curvature) and the fit
-// is redone without it. The particle itself always stays in.
+// A second, reweighted fit: a surface neighbour whose height is off the first fit by a good part
+// of `trim` (d) lies on another layer (a particle of the second row that the detection also
+// flagged, which held a viscous drop's outline as a rounded polygon 4% off the circle's
+// curvature); Tukey's biweight takes it out smoothly. The particle itself always stays in.
 template <int D, class OnSurface, class Weight>
 std::optional<double> fitted_normal_divergence(const Stencil<D>& s, OnSurface on_surface, Weight weight,
                                                const Vec<D>& n_i, double trim) {
@@ -65,10 +65,13 @@ std::optional<double> fitted_normal_divergence(const Stencil<D>& s, OnSurface on
   };
   auto c = solve();
   if (!c) return std::nullopt;
-  bool trimmed = false;
-  for (std::size_t k = 1; k < points.size(); ++k)
-    if (std::abs(points[k].h - points[k].phi.dot(*c)) > trim / s.h) points[k].w = 0, trimmed = true;
-  if (trimmed && !(c = solve())) return std::nullopt;
+  // Tukey's biweight on the first fit's residual, zero beyond `trim`: continuous in the positions,
+  // so a neighbour drifting off the layer fades out of the fit instead of leaving it in one step.
+  for (std::size_t k = 1; k < points.size(); ++k) {
+    const double u = (points[k].h - points[k].phi.dot(*c)) * s.h / trim;
+    points[k].w *= std::abs(u) < 1 ? (1 - u * u) * (1 - u * u) : 0.0;
+  }
+  if (!(c = solve())) return std::nullopt;
   if constexpr (D == 2) {
     const double b = (*c)[1], curve = (*c)[2];
     return -curve / std::pow(1 + b * b, 1.5) / s.h;
