@@ -6,9 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <numbers>
 #include <string>
+#include <vector>
 
+#include "app/exit_codes.hpp"
+#include "app/run.hpp"
 #include "h5_read.hpp"
 #include "scene_error.hpp"
 #include "shipped_scene_run.hpp"
@@ -60,6 +64,85 @@ TEST_CASE("surface tension: a square drop relaxes to a circle at the Laplace pre
     fastest = std::max(fastest, std::hypot(velocity.values[k], velocity.values[k + 1]));
   MESSAGE("largest speed at the end: ", fastest, " m/s");
   CHECK(fastest < 1e-3 * kSigma / mu);
+}
+
+namespace {
+
+// The square drop at 18 across relaxed at mu = 0.01 (as above): its last frame.
+std::filesystem::path relaxed_drop(const std::string& name) {
+  const double mu = 0.01, radius = kSide / std::sqrt(std::numbers::pi),
+               end = 2 * radius * radius / (mu / 1000);
+  const auto out =
+      test::run_shipped_scene(name, "square_drop_2d.toml", "",
+                              {"particles.spacing=" + exact(kSide / 18), "material.viscosity=" + exact(mu),
+                               "time.end=" + exact(end), "output.interval=" + exact(end / 2)});
+  return test::last_frame(out);
+}
+
+// (Ixx - Iyy) / (Ixx + Iyy) of the particles about their centre: 2 eps for r = R (1 + eps cos 2 theta).
+double deformation(const std::filesystem::path& frame) {
+  const auto x = test::read_dataset(frame, "position").values;
+  const std::size_t n = x.size() / 3;
+  double cx = 0, cy = 0;
+  for (std::size_t k = 0; k < n; ++k) cx += x[3 * k] / n, cy += x[3 * k + 1] / n;
+  double ixx = 0, iyy = 0;
+  for (std::size_t k = 0; k < n; ++k)
+    ixx += (x[3 * k] - cx) * (x[3 * k] - cx), iyy += (x[3 * k + 1] - cy) * (x[3 * k + 1] - cy);
+  return (ixx - iyy) / (ixx + iyy);
+}
+
+}  // namespace
+
+// Mode 2 of a drop at rest (the relaxed square above, R/d = 10) given the potential flow
+// v = A (x, -y) that swings its surface by 5% of R, at water's viscosity (Ohnesorge 0.016), 3.5
+// periods. Measured 2026-11-30: period 1.1% above Lamb's 2 pi sqrt(rho R^3 / (6 sigma)), the
+// amplitude's decay 5.1% above 4 nu / R^2 (R/d = 20: +0.8%, -6.7%). Asserted: the issue's 5% and
+// 30%, from the peaks of the deformation (period: their spacing; decay: their ratio).
+TEST_CASE("surface tension: a drop's mode-2 oscillation has Lamb's period and decays at 4 nu / R^2") {
+  const auto start = relaxed_drop("oscillating_drop_start");
+  const double radius = kSide / std::sqrt(std::numbers::pi), rho = 1000, mu = 1e-3;
+  const double omega = std::sqrt(6 * kSigma / (rho * radius * radius * radius)), lift = 0.05 * omega;
+  const auto x = test::read_dataset(start, "position").values,
+             p = test::read_dataset(start, "pressure").values;
+  const std::size_t n = x.size() / 3;
+  double cx = 0, cy = 0;
+  for (std::size_t k = 0; k < n; ++k) cx += x[3 * k] / n, cy += x[3 * k + 1] / n;
+  auto dir = test::unique_scratch("oscillating_drop");
+  std::string csv = "x,y,u,v,p\n";
+  for (std::size_t k = 0; k < n; ++k)
+    csv += exact(x[3 * k] - cx) + "," + exact(x[3 * k + 1] - cy) + "," + exact(lift * (x[3 * k] - cx)) + "," +
+           exact(-lift * (x[3 * k + 1] - cy)) + "," + exact(p[k]) + "\n";
+  test::write_text(dir / "drop.csv", csv);
+  std::string scene = test::read_text(test::scene_path("square_drop_2d.toml"));
+  const auto block = scene.find("[[fluid]]");
+  REQUIRE(block != std::string::npos);
+  scene.replace(block, scene.find("[[systems]]") - block, "[[import]]\nfile = \"drop.csv\"\n\n");
+  test::write_text(dir / "scene.toml", scene);
+  RunOptions opt;
+  opt.scene = (dir / "scene.toml").string();
+  opt.out_dir = (dir / "out").string();
+  opt.quiet = true;
+  opt.sets = {"particles.spacing=" + exact(kSide / 18), "material.viscosity=" + exact(mu), "time.end=0.045",
+              "output.interval=0.0005"};
+  REQUIRE(run_scene(opt) == kExitDone);
+  std::vector<double> t, shape;
+  for (int k = 0; std::filesystem::exists(test::frame_path(dir / "out", k)); ++k)
+    t.push_back(0.0005 * k), shape.push_back(deformation(test::frame_path(dir / "out", k)));
+  REQUIRE(t.size() == 91);
+  std::vector<double> peak_t, peak;  // local maxima, refined by a parabola through three samples
+  for (std::size_t k = 1; k + 1 < shape.size(); ++k)
+    if (shape[k] > shape[k - 1] && shape[k] >= shape[k + 1]) {
+      const double a = shape[k - 1], b = shape[k], c = shape[k + 1], s = 0.5 * (a - c) / (a - 2 * b + c);
+      peak_t.push_back(t[k] + s * 0.0005), peak.push_back(b - 0.25 * (a - c) * s);
+    }
+  REQUIRE(peak.size() >= 3);
+  const double period = (peak_t[2] - peak_t[0]) / 2, lamb = 2 * std::numbers::pi / omega;
+  const double decay = std::log(peak[0] / peak[2]) / (peak_t[2] - peak_t[0]),
+               viscous = 4 * mu / rho / (radius * radius);
+  MESSAGE("period ", period, " s against Lamb's ", lamb, "; decay ", decay,
+          " 1/s against 4 nu / R^2 = ", viscous);
+  CHECK(std::abs(period / lamb - 1) < 0.05);
+  CHECK(std::abs(decay / viscous - 1) < 0.3);
 }
 
 TEST_CASE("surface tension: bad keys and a method without free-surface rows are exit 2 at the key") {
