@@ -80,6 +80,7 @@ slow("isph: the one-set-up candidate meets the dam-break criterion and runs thro
 slow("isph: a resting tank keeps rho g depth and stays still with the one-set-up candidate" 12)
 slow("energy: an ISPH sloshing tank with the one-set-up candidate never gains energy and keeps the period" 12)
 slow("cavity: the Re = 100 lid-driven cavity reaches Ghia's centreline velocities" 20)
+slow("surface tension: the paper's cube relaxes to a sphere near its Laplace pressure (coarse)" 14)
 
 # The check: every name above is a test of ryushi_tests or ryushi_stability_tests. Skipped when an
 # executable is not built yet (its list is undefined and ctest shows it as *_NOT_BUILT).

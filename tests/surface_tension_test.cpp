@@ -66,6 +66,26 @@ TEST_CASE("surface tension: a square drop relaxes to a circle at the Laplace pre
   CHECK(fastest < 1e-3 * kSigma / mu);
 }
 
+// scenes/cube_drop_3d.toml at 10 across (1,000 particles; R/d = 6.2), mu = 0.01, to 2 R^2 / nu:
+// the 3D fit and normal. Measured 2026-11-30: the centre's pressure over the last 20% 4.7% above
+// 2 sigma / R (20 across: +4.8%, most of it the volume the 3D projection loses; docs/
+// surface_tension.md). Asserted: 8%, a coarse guard of the 3D fit and normal; the issue's 5% is for
+// 40 across.
+TEST_CASE("surface tension: the paper's cube relaxes to a sphere near its Laplace pressure (coarse)") {
+  const double radius = kSide * std::cbrt(3 / (4 * std::numbers::pi));
+  const auto out = test::run_shipped_scene("cube_drop", "cube_drop_3d.toml", "", {"particles.spacing=1e-4"});
+  auto csv = test::read_csv(out / "probes.csv");
+  const double end = csv["time"].back();
+  double sum = 0;
+  int count = 0;
+  for (std::size_t k = 0; k < csv["time"].size(); ++k)
+    if (csv["time"][k] >= 0.8 * end) sum += csv["p_centre"][k], ++count;
+  REQUIRE(count > 5);
+  const double pressure = sum / count, exact = 2 * kSigma / radius;
+  MESSAGE("pressure over the last 20%: ", pressure, " Pa against 2 sigma / R = ", exact, " Pa");
+  CHECK(std::abs(pressure / exact - 1) < 0.08);
+}
+
 namespace {
 
 // The square drop at 18 across relaxed at mu = 0.01 (as above): its last frame.
