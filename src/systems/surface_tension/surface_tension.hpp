@@ -23,7 +23,6 @@
 //              external force: v += dt f / rho, x += dt^2 f / rho (off by default: docs/surface_tension.md)
 // and a capillary step limit dt <= C sqrt(rho0 d^3 / (2 pi sigma)) (Brackbill et al. 1992) for
 // the driver (resources::dt_limit). Interior particles carry kappa = 0 and p_s = 0.
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -104,10 +103,7 @@ class SurfaceTension : public System<D> {
       for_each_of_kind(kind, kFluid, [&](std::size_t i) {
         if (!near_surface(nl, surface, i))
           return;  // the normal needs lambda on surface rows' neighbours only
-        Eigen::SelfAdjointEigenSolver<Mat<D>> eig;
-        const Mat<D> M = moment_matrix(view, i);
-        eig.computeDirect(0.5 * (M + M.transpose()), Eigen::EigenvaluesOnly);
-        lambda_[i] = eig.eigenvalues()[0];
+        lambda_[i] = smallest_moment_eigenvalue(moment_matrix(view, i));
       });
     for_each_of_kind(kind, kFluid, [&](std::size_t i) {
       normal[i] =
@@ -141,12 +137,13 @@ class SurfaceTension : public System<D> {
       const double stretch = p_.viscous_normal_stress ? normal_stretch(view, v, normal[i], i) : 0.0;
       surface_pressure[i] = 2 * p_.sigma * kappa[i] + 2 * context_.viscosity * stretch;
     });
-    for_each_of_kind(kind, kFluid, [&](std::size_t i) {
-      if (!surface[i]) return;
-      const Vec<D> a = (-p_.sigma * kappa[i] * delta / rho[i]) * normal[i];
-      v[i] += dt * a;
-      x[i] += dt * dt * a;
-    });
+    if (p_.delta_coefficient > 0)  // the paper's surface force (off by default)
+      for_each_of_kind(kind, kFluid, [&](std::size_t i) {
+        if (!surface[i]) return;
+        const Vec<D> a = (-p_.sigma * kappa[i] * delta / rho[i]) * normal[i];
+        v[i] += dt * a;
+        x[i] += dt * dt * a;
+      });
   }
 
  private:
