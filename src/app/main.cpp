@@ -159,6 +159,12 @@ int main(int argc, char** argv) {
           "--jacobi-weight", solve.jacobi_weight,
           "Weight of the multigrid's Jacobi sweeps (default: 1 with cg, 2/3 with bicgstab, as in scenes)")
       ->check(CLI::Range(1e-3, 1.5));
+  solve_cmd
+      ->add_option("--block-size", solve.block_size,
+                   "Unknowns per particle (MPH-I: the dimension); --coords has one line per block")
+      ->check(CLI::Range(1, 3));
+  solve_cmd->add_flag("--bound-jacobi-weight", solve.bound_jacobi_weight,
+                      "Each level's Jacobi weight at most 4 / (3 max eig(D^-1 A)) (MPH-I's matrices)");
   solve_cmd->add_option("--threads", solve.threads, "Worker threads (default: all cores)")
       ->check(CLI::NonNegativeNumber);
 

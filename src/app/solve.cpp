@@ -35,15 +35,22 @@ int solve_command(const SolveCommandOptions& o) {
     } else {
       if (o.coords.empty()) throw std::invalid_argument("--preconditioner multigrid needs --coords");
       auto raw = read_values(o.coords, 0);
-      if (A.rows == 0 || raw.size() % A.rows != 0 || (raw.size() / A.rows != 2 && raw.size() / A.rows != 3))
-        throw std::invalid_argument(o.coords + ": expected 2 or 3 coordinates per row of the matrix");
-      const int D = static_cast<int>(raw.size() / A.rows);
+      const std::size_t blocks = A.rows / std::size_t(o.block_size);
+      if (A.rows % std::size_t(o.block_size) != 0)
+        throw std::invalid_argument(o.matrix + ": " + std::to_string(A.rows) + " rows are not blocks of " +
+                                    std::to_string(o.block_size));
+      if (blocks == 0 || raw.size() % blocks != 0 || (raw.size() / blocks != 2 && raw.size() / blocks != 3))
+        throw std::invalid_argument(o.coords + ": expected 2 or 3 coordinates per block of " +
+                                    std::to_string(o.block_size) + " rows of the matrix");
+      const int D = static_cast<int>(raw.size() / blocks);
+      const std::size_t block = std::size_t(o.block_size);
       double width = o.bucket_width;
       if (width <= 0) {  // the longest coupling: buckets at least this wide keep A_c to 3^D per row
         for (std::size_t r = 0; r < A.rows; ++r)
           for (auto k = A.row_ptr[r]; k < A.row_ptr[r + 1]; ++k) {
             double d2 = 0;
-            for (int a = 0; a < D; ++a) d2 += std::pow(raw[r * D + a] - raw[A.col[k] * D + a], 2);
+            for (int a = 0; a < D; ++a)
+              d2 += std::pow(raw[r / block * D + a] - raw[A.col[k] / block * D + a], 2);
             width = std::max(width, std::sqrt(d2));
           }
         width *= 1 + 1e-9;
@@ -57,7 +64,8 @@ int solve_command(const SolveCommandOptions& o) {
       mo.bottom_smoothing = o.bottom_smoothing;
       mo.bottom_size = o.bottom_size;
       mo.jacobi_weight = o.jacobi_weight > 0 ? o.jacobi_weight : o.krylov == "bicgstab" ? 2.0 / 3.0 : 1.0;
-      auto mg = std::make_unique<BucketMultigrid>(A, raw, D, width, mo);
+      mo.bound_jacobi_weight = o.bound_jacobi_weight;
+      auto mg = std::make_unique<BucketMultigrid>(A, raw, D, width, mo, o.block_size);
       for (auto& l : mg->levels()) {
         char b[64];
         std::snprintf(b, sizeof b, "%s%zux%.1f", levels.empty() ? "" : ",", l.rows,

@@ -22,6 +22,10 @@ struct SolveCommandOptions {
   std::size_t bottom_size = 64;
   double jacobi_weight = 0;  // 0: the scenes' default for the Krylov method (1 with cg, 2/3 with bicgstab)
   int threads = 0;           // 0: all cores
+  // Unknowns per particle (MPH-I's velocity: the dimension): --coords then holds one line per
+  // block of rows, and the multigrid sums each component over a bucket on its own.
+  int block_size = 1;
+  bool bound_jacobi_weight = false;  // each level's weight at most 4 / (3 max eig(D^-1 A))
 };
 
 int solve_command(const SolveCommandOptions& options);

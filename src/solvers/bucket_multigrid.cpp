@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "solvers/jacobi_spectrum.hpp"
 #include "solvers/reusable_buffer.hpp"
 #include "solvers/vector_ops.hpp"
 
@@ -16,7 +17,10 @@ namespace ryushi::solvers {
 
 namespace {
 
-using Coord = std::array<std::int64_t, 3>;
+// A bucket's coordinates and, in [3], the component of a block row's unknown (0 for a scalar
+// system): the components of a vector unknown aggregate separately, bucket by bucket.
+using Coord = std::array<std::int64_t, 4>;
+constexpr int kMaxSlots = 27 * 3;  // 3^D neighbouring buckets times at most 3 components
 
 template <class T>
 struct Level {
@@ -24,6 +28,7 @@ struct Level {
   CsrView<T> view;    // what the cycle reads: A, or at level 0 the caller's structure
   ReusableBuffer<T> values0;  // level 0 in float: the caller's values, converted
   std::vector<T> inverse_diagonal;
+  T jacobi_weight = 0;  // the options' weight, or its bound (MultigridOptions::bound_jacobi_weight)
   std::vector<std::uint32_t> to_coarse;                  // this level's element -> next level's
   std::vector<std::uint64_t> member_offsets{0};          // next level's element -> members here
   std::vector<std::uint32_t> members;
@@ -40,18 +45,22 @@ struct Level {
 
 // Groups elements by bucket coordinate; returns the coarse coordinates and fills the map and the
 // member lists (counting sort over a dense key range, members in ascending order).
-std::vector<Coord> aggregate(const std::vector<Coord>& q, int D, std::vector<std::uint32_t>& to_coarse,
-                             std::vector<std::uint64_t>& offsets, std::vector<std::uint32_t>& members) {
-  Coord lo{0, 0, 0}, hi{0, 0, 0};
+// With block rows the unknowns of one particle are consecutive, so the coarse elements come out
+// consecutive per bucket too: a coarse element's component is its index modulo the block size.
+std::vector<Coord> aggregate(const std::vector<Coord>& q, int D, int block,
+                             std::vector<std::uint32_t>& to_coarse, std::vector<std::uint64_t>& offsets,
+                             std::vector<std::uint32_t>& members) {
+  Coord lo{0, 0, 0, 0}, hi{0, 0, 0, 0};
   for (int a = 0; a < D; ++a) {
     lo[a] = hi[a] = q.empty() ? 0 : q[0][a];
     for (auto& c : q) lo[a] = std::min(lo[a], c[a]), hi[a] = std::max(hi[a], c[a]);
   }
   std::int64_t nx = hi[0] - lo[0] + 1, ny = D > 1 ? hi[1] - lo[1] + 1 : 1, nz = D > 2 ? hi[2] - lo[2] + 1 : 1;
   auto key = [&](const Coord& c) {
-    return std::size_t((c[0] - lo[0]) + nx * ((D > 1 ? c[1] - lo[1] : 0) + ny * (D > 2 ? c[2] - lo[2] : 0)));
+    return std::size_t(c[3] + block * ((c[0] - lo[0]) +
+                                       nx * ((D > 1 ? c[1] - lo[1] : 0) + ny * (D > 2 ? c[2] - lo[2] : 0))));
   };
-  std::vector<std::uint32_t> index(std::size_t(nx * ny * nz), UINT32_MAX);
+  std::vector<std::uint32_t> index(std::size_t(nx * ny * nz * block), UINT32_MAX);
   std::vector<Coord> coarse;
   to_coarse.resize(q.size());
   std::vector<std::uint64_t> count;
@@ -74,7 +83,8 @@ std::vector<Coord> aggregate(const std::vector<Coord>& q, int D, std::vector<std
 }
 
 // A_c = scale * P^T A P, row by row: each coarse row gathers its members' rows into the 3^D
-// slots given by the bucket offset of the column's coarse element (Algorithm 1, no atomics).
+// slots given by the bucket offset of the column's coarse element (Algorithm 1, no atomics),
+// times the block size: a slot per neighbouring bucket and component.
 struct GalerkinScratch {
   ReusableBuffer<double> val;
   ReusableBuffer<std::int64_t> col;
@@ -86,23 +96,27 @@ struct GalerkinScratch {
 template <class T>
 void galerkin(const CsrView<T>& A, const std::vector<std::uint32_t>& to_coarse,
               const std::vector<std::uint64_t>& offsets, const std::vector<std::uint32_t>& members,
-              const std::vector<Coord>& q, std::size_t nc, int D, double scale, std::uint32_t* ap_col,
-              T* ap_val, T* inverse_diagonal, GalerkinScratch& scratch, CsrMatrix<T>& Ac) {
-  const int slots = D == 2 ? 9 : 27;
+              const std::vector<Coord>& q, std::size_t nc, int D, int block, double scale,
+              std::uint32_t* ap_col, T* ap_val, T* inverse_diagonal, GalerkinScratch& scratch,
+              CsrMatrix<T>& Ac) {
+  const int slots = (D == 2 ? 9 : 27) * block;
   double* val = scratch.val.ensure(nc * slots);
   std::int64_t* col = scratch.col.ensure(nc * slots);
   // One coarse row: its members' rows gathered into the slots (and A P's rows, the diagonal).
   auto gather = [&](std::size_t I) {
-    std::array<double, 27> coarse_val{};
-    std::array<std::int64_t, 27> coarse_col;
-    coarse_col.fill(-1);
+    std::array<double, kMaxSlots> coarse_val;
+    std::array<std::int64_t, kMaxSlots> coarse_col;
+    std::fill_n(coarse_val.begin(), slots, 0.0);
+    std::fill_n(coarse_col.begin(), slots, -1);
     for (auto m = offsets[I]; m < offsets[I + 1]; ++m) {
       std::uint32_t i = members[m];
       const Coord& qi = q[i];
-      std::array<double, 27> row_val{};
-      std::array<std::uint32_t, 27> row_col;
-      row_col.fill(static_cast<std::uint32_t>(I));
-      std::uint32_t used = 0;  // bit s: slot s holds an entry (possibly summing to zero)
+      std::array<double, kMaxSlots> row_val;
+      std::array<std::uint32_t, kMaxSlots> row_col;
+      std::array<bool, kMaxSlots> used;  // slot s holds an entry (possibly summing to zero)
+      std::fill_n(row_val.begin(), slots, 0.0);
+      std::fill_n(row_col.begin(), slots, static_cast<std::uint32_t>(I));
+      std::fill_n(used.begin(), slots, false);
       T diagonal = 0;
       for (auto k = A.row_ptr[i]; k < A.row_ptr[i + 1]; ++k) {
         const std::uint32_t j = A.col[k];
@@ -116,14 +130,15 @@ void galerkin(const CsrView<T>& A, const std::vector<std::uint32_t>& to_coarse,
                 "influence radius");
           slot += int(d) * stride;
         }
+        slot = slot * block + int(qj[3]);
         row_val[slot] += A.val[k];
         row_col[slot] = to_coarse[j];
-        used |= 1u << slot;
+        used[slot] = true;
         if (j == i) diagonal += A.val[k];
       }
       if (inverse_diagonal) inverse_diagonal[i] = T(1) / diagonal;
       for (int s = 0; s < slots; ++s)
-        if (used >> s & 1u) {
+        if (used[s]) {
           coarse_val[s] += row_val[s];
           coarse_col[s] = row_col[s];
         }
@@ -149,7 +164,7 @@ void galerkin(const CsrView<T>& A, const std::vector<std::uint32_t>& to_coarse,
   Ac.col.resize(Ac.row_ptr[nc]);
   Ac.val.resize(Ac.row_ptr[nc]);
   tbb::parallel_for(std::size_t(0), nc, [&](std::size_t I) {
-    std::array<std::pair<std::int64_t, double>, 27> row;
+    std::array<std::pair<std::int64_t, double>, kMaxSlots> row;
     int used = 0;
     for (int s = 0; s < slots; ++s)
       if (col[I * slots + s] >= 0) row[used++] = {col[I * slots + s], val[I * slots + s]};
@@ -185,7 +200,8 @@ void check_inverse_diagonal(const std::vector<T>& d) {
 
 struct BucketMultigrid::Impl {
   virtual ~Impl() = default;
-  virtual void build(const CsrMatrix<double>& A, std::span<const double> x, int D, double width) = 0;
+  virtual void build(const CsrMatrix<double>& A, std::span<const double> x, int D, double width,
+                     int block) = 0;
   virtual void apply(std::span<const double> r, std::span<double> z) const = 0;
   virtual std::vector<MultigridLevelInfo> levels() const = 0;
   virtual std::size_t bytes() const = 0;
@@ -202,9 +218,11 @@ struct Hierarchy final : BucketMultigrid::Impl {
 
   explicit Hierarchy(const MultigridOptions& opt) : o(opt) {}
 
-  void build(const CsrMatrix<double>& A, std::span<const double> x, int D, double width) override {
+  void build(const CsrMatrix<double>& A, std::span<const double> x, int D, double width, int block) override {
     const std::size_t n = A.rows;
-    if (x.size() != n * std::size_t(D)) throw std::invalid_argument("multigrid: coordinates do not match the matrix");
+    if (block < 1 || block > 3 || n % std::size_t(block) != 0 ||
+        x.size() != n / std::size_t(block) * std::size_t(D))
+      throw std::invalid_argument("multigrid: coordinates do not match the matrix");
     // Level 0 is the caller's matrix: its structure is shared (A must outlive the hierarchy and
     // keep its values, as it does in the pressure pipeline: assembled, set up, solved), its values
     // converted when the hierarchy is in float.
@@ -221,22 +239,23 @@ struct Hierarchy final : BucketMultigrid::Impl {
     }
     q.resize(n);
     std::vector<double> lo(D, INFINITY);
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < n / block; ++i)
       for (int a = 0; a < D; ++a) lo[a] = std::min(lo[a], x[i * D + a]);
-    parallel_indices(n, [&](std::size_t i) {
-      q[i] = Coord{0, 0, 0};
+    parallel_indices(n, [&](std::size_t u) {  // unknown u: particle u / block, component u % block
+      const std::size_t i = u / block;
+      q[u] = Coord{0, 0, 0, std::int64_t(u % block)};
       for (int a = 0; a < D; ++a)
-        q[i][a] = static_cast<std::int64_t>(std::floor((x[i * D + a] - lo[a]) / width));
+        q[u][a] = static_cast<std::int64_t>(std::floor((x[i * D + a] - lo[a]) / width));
     });
     std::size_t count = 1;
     while (L[count - 1].view.rows > o.bottom_size && count < 40) {
       auto& fine = L[count - 1];
       fine.ap_slots = 0;
-      auto coarse = aggregate(q, D, fine.to_coarse, fine.member_offsets, fine.members);
+      auto coarse = aggregate(q, D, block, fine.to_coarse, fine.member_offsets, fine.members);
       if (coarse.size() == fine.view.rows) break;                     // nothing left to merge
       double scale = (o.scale_correction && count >= 2) ? 0.5 : 1.0;  // eq. 18, not between 0 and 1
       // A P is kept where its 3^D slots are well under A's entries per row (module comment).
-      const int slots = D == 2 ? 9 : 27;
+      const int slots = (D == 2 ? 9 : 27) * block;
       const bool keep_ap =
           o.post_smoothing > 0 && slots < 0.5 * double(fine.view.nonzeros()) / double(fine.view.rows);
       if (keep_ap) fine.ap_slots = slots;
@@ -244,7 +263,7 @@ struct Hierarchy final : BucketMultigrid::Impl {
       auto& f = L[count - 1];
       auto& next = L[count];
       f.inverse_diagonal.resize(f.view.rows);
-      galerkin(f.view, f.to_coarse, f.member_offsets, f.members, q, coarse.size(), D, scale,
+      galerkin(f.view, f.to_coarse, f.member_offsets, f.members, q, coarse.size(), D, block, scale,
                keep_ap ? f.ap_col.ensure(f.view.rows * slots) : nullptr,
                keep_ap ? f.ap_val.ensure(f.view.rows * slots) : nullptr, f.inverse_diagonal.data(), scratch,
                next.A);
@@ -259,6 +278,11 @@ struct Hierarchy final : BucketMultigrid::Impl {
     inverse_diagonal(L.back().view, L.back().inverse_diagonal);  // the others came with their Galerkin pass
     for (auto& l : L) {
       check_inverse_diagonal(l.inverse_diagonal);
+      l.jacobi_weight = static_cast<T>(o.jacobi_weight);
+      if (o.bound_jacobi_weight) {
+        const double rho = largest_jacobi_eigenvalue(l.view, l.inverse_diagonal);
+        if (rho > 0) l.jacobi_weight = static_cast<T>(std::min(o.jacobi_weight, 4.0 / (3.0 * rho)));
+      }
       l.r.assign(l.view.rows, T(0));
       l.z.assign(l.view.rows, T(0));
       l.tmp.assign(l.view.rows, T(0));
@@ -267,7 +291,7 @@ struct Hierarchy final : BucketMultigrid::Impl {
 
   // z += w D^-1 (r - A z), or z = w D^-1 r from a zero guess.
   void jacobi(const Level<T>& l, bool zero) const {
-    const T w = static_cast<T>(o.jacobi_weight);
+    const T w = l.jacobi_weight;
     if (zero) {
       parallel_indices(l.r.size(), [&](std::size_t i) { l.z[i] = w * l.inverse_diagonal[i] * l.r[i]; });
       return;
@@ -297,7 +321,7 @@ struct Hierarchy final : BucketMultigrid::Impl {
     int post = o.post_smoothing;
     if (l.ap_slots > 0) {  // z += P e_c and the first sweep, with A (z + P e_c) = tmp + (A P) e_c
       const std::size_t slots = l.ap_slots;
-      const T w = static_cast<T>(o.jacobi_weight);
+      const T w = l.jacobi_weight;
       parallel_indices(l.z.size(), [&](std::size_t i) {
         T az = l.tmp[i];
         const T* val = l.ap_val.data.get() + i * slots;
@@ -336,20 +360,21 @@ struct Hierarchy final : BucketMultigrid::Impl {
 
 }  // namespace
 
-BucketMultigrid::BucketMultigrid(const CsrMatrix<double>& A, std::span<const double> coordinates, int dimension,
-                                 double bucket_width, const MultigridOptions& options) {
+BucketMultigrid::BucketMultigrid(const CsrMatrix<double>& A, std::span<const double> coordinates,
+                                 int dimension, double bucket_width, const MultigridOptions& options,
+                                 int block_size) {
   if (dimension != 2 && dimension != 3) throw std::invalid_argument("multigrid: dimension must be 2 or 3");
   if (options.single_precision)
     impl_ = std::make_unique<Hierarchy<float>>(options);
   else
     impl_ = std::make_unique<Hierarchy<double>>(options);
-  impl_->build(A, coordinates, dimension, bucket_width);
+  impl_->build(A, coordinates, dimension, bucket_width, block_size);
 }
 BucketMultigrid::~BucketMultigrid() = default;
 void BucketMultigrid::rebuild(const CsrMatrix<double>& A, std::span<const double> coordinates, int dimension,
-                              double bucket_width) {
+                              double bucket_width, int block_size) {
   if (dimension != 2 && dimension != 3) throw std::invalid_argument("multigrid: dimension must be 2 or 3");
-  impl_->build(A, coordinates, dimension, bucket_width);
+  impl_->build(A, coordinates, dimension, bucket_width, block_size);
 }
 void BucketMultigrid::apply(std::span<const double> r, std::span<double> z) const { impl_->apply(r, z); }
 std::string BucketMultigrid::name() const { return "multigrid"; }
