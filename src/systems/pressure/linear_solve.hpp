@@ -102,20 +102,12 @@ class LinearSolve final : public System<D> {
     }
     for (std::size_t r = 0; r < rows; ++r) p[sys.particle_of_row[r]] = x_[r];
     for (auto& [i, value] : sys.fixed_values) p[i] = value;
-    ++stats.solves;
-    stats.iterations += status.iterations;
-    stats.max_iterations = std::max(stats.max_iterations, status.iterations);
-    stats.max_relative_residual = std::max(stats.max_relative_residual, status.relative_residual);
-    stats.max_rows = std::max(stats.max_rows, rows);
-    stats.max_nonzeros = std::max(stats.max_nonzeros, sys.A.nonzeros());
     const std::size_t matrix_bytes = sys.A.bytes() +
                                      (sys.b.size() + sys.coordinates.size()) * sizeof(double) +
                                      sys.particle_of_row.size() * sizeof(std::uint32_t);
     const std::size_t krylov_bytes =
         (work_vectors_ * rows + x_.capacity() + uniform_.capacity() + z_.capacity()) * sizeof(double);
-    stats.max_matrix_bytes = std::max(stats.max_matrix_bytes, matrix_bytes);
-    stats.max_preconditioner_bytes = std::max(stats.max_preconditioner_bytes, preconditioner_bytes);
-    stats.max_krylov_bytes = std::max(stats.max_krylov_bytes, krylov_bytes);
+    record_solve(stats, status, rows, sys.A.nonzeros(), matrix_bytes, preconditioner_bytes, krylov_bytes);
   }
 
  private:

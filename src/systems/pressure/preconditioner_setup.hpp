@@ -10,6 +10,39 @@
 
 namespace ryushi {
 
+// The spec's preconditioner for A into `out` (none: null), the last hierarchy rebuilt in its own
+// storage (BucketMultigrid::rebuild). coordinates: one line of `dimension` values per block of
+// block_size rows; bound_weight: MultigridOptions::bound_jacobi_weight.
+inline void build_preconditioner(const SolverSpec& spec, const solvers::CsrMatrix<double>& A,
+                                 std::span<const double> coordinates, int dimension, double bucket_width,
+                                 PressurePreconditioner& out, int block_size = 1, bool bound_weight = false) {
+  out.bytes = 0;
+  out.levels = 0;
+  if (A.rows == 0 || spec.preconditioner == "none") {
+    out.M.reset();
+    return;
+  }
+  if (spec.preconditioner == "jacobi") {
+    out.M = std::make_unique<solvers::JacobiPreconditioner>(A);
+    out.bytes = A.rows * sizeof(double);
+    out.levels = 1;
+    return;
+  }
+  auto* mg = dynamic_cast<solvers::BucketMultigrid*>(out.M.get());
+  if (mg) {
+    mg->rebuild(A, coordinates, dimension, bucket_width, block_size);
+  } else {
+    auto options = multigrid_options(spec);
+    options.bound_jacobi_weight = bound_weight;
+    auto fresh = std::make_unique<solvers::BucketMultigrid>(A, coordinates, dimension, bucket_width, options,
+                                                            block_size);
+    mg = fresh.get();
+    out.M = std::move(fresh);
+  }
+  out.bytes = mg->bytes();
+  out.levels = static_cast<int>(mg->levels().size());
+}
+
 template <int D>
 class PreconditionerSetup final : public System<D> {
  public:
@@ -20,30 +53,7 @@ class PreconditionerSetup final : public System<D> {
   void initialise(World<D>&, Resources& res) override { res.ensure(preconditioner_resource); }
   void run(SystemContext<D>& ctx) override {
     auto [sys, out] = io.fetch(ctx);
-    out.bytes = 0;
-    out.levels = 0;
-    if (sys.A.rows == 0) {
-      out.M.reset();
-      return;
-    }
-    if (spec_.preconditioner == "jacobi") {
-      out.M = std::make_unique<solvers::JacobiPreconditioner>(sys.A);
-      out.bytes = sys.A.rows * sizeof(double);
-      out.levels = 1;
-      return;
-    }
-    // The last step's hierarchy is rebuilt in its own storage (BucketMultigrid::rebuild).
-    auto* mg = dynamic_cast<solvers::BucketMultigrid*>(out.M.get());
-    if (mg) {
-      mg->rebuild(sys.A, sys.coordinates, sys.dimension, sys.bucket_width);
-    } else {
-      auto fresh = std::make_unique<solvers::BucketMultigrid>(sys.A, sys.coordinates, sys.dimension,
-                                                              sys.bucket_width, multigrid_options(spec_));
-      mg = fresh.get();
-      out.M = std::move(fresh);
-    }
-    out.bytes = mg->bytes();
-    out.levels = static_cast<int>(mg->levels().size());
+    build_preconditioner(spec_, sys.A, sys.coordinates, sys.dimension, sys.bucket_width, out);
   }
 
  private:

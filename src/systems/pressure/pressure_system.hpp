@@ -3,6 +3,7 @@
 // assembly, the preconditioner setup, the linear solve and the matrix dump. Rows are the
 // particles whose pressure is unknown, in particle order; `coordinates` (rows x dimension,
 // row-major) lets the bucket multigrid build its hierarchy from where the particles are.
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -53,6 +54,21 @@ struct LinearSolveStatistics {
   std::string krylov;  // the method the solves used (a non-symmetric system takes BiCGSTAB)
   long long preconditioner_fallbacks = 0;  // solves that failed with the preconditioner, redone with Jacobi
 };
+
+// One solve's figures into the run's statistics (the largest of each over the run).
+inline void record_solve(LinearSolveStatistics& stats, const solvers::SolveStatus& status, std::size_t rows,
+                         std::size_t nonzeros, std::size_t matrix_bytes, std::size_t preconditioner_bytes,
+                         std::size_t krylov_bytes) {
+  ++stats.solves;
+  stats.iterations += status.iterations;
+  stats.max_iterations = std::max(stats.max_iterations, status.iterations);
+  stats.max_relative_residual = std::max(stats.max_relative_residual, status.relative_residual);
+  stats.max_rows = std::max(stats.max_rows, rows);
+  stats.max_nonzeros = std::max(stats.max_nonzeros, nonzeros);
+  stats.max_matrix_bytes = std::max(stats.max_matrix_bytes, matrix_bytes);
+  stats.max_preconditioner_bytes = std::max(stats.max_preconditioner_bytes, preconditioner_bytes);
+  stats.max_krylov_bytes = std::max(stats.max_krylov_bytes, krylov_bytes);
+}
 
 inline constexpr Resource<PressureSystem> pressure_system_resource{"pressure_system"};
 inline constexpr Resource<PressurePreconditioner> preconditioner_resource{"preconditioner"};

@@ -16,6 +16,14 @@
 
 namespace ryushi {
 
+// Writes DIR/NAME through write(DIR/NAME.tmp) and a rename, so a reader never sees half a file.
+template <class Write>
+void publish_dump_file(const std::filesystem::path& dir, const std::string& name, Write&& write) {
+  auto target = dir / name, tmp = dir / (name + ".tmp");
+  write(tmp.string());
+  std::filesystem::rename(tmp, target);
+}
+
 template <int D>
 class PressureSystemDump final : public System<D> {
  public:
@@ -29,6 +37,7 @@ class PressureSystemDump final : public System<D> {
     std::vector<double> solution(sys.A.rows);
     for (std::size_t r = 0; r < sys.A.rows; ++r) solution[r] = p[sys.particle_of_row[r]];
     std::filesystem::create_directories(dir_);
+    auto publish = [&](const std::string& name, auto&& write) { publish_dump_file(dir_, name, write); };
     publish("A.mtx", [&](const std::string& f) { solvers::write_matrix_market(f, sys.A); });
     publish("b.txt", [&](const std::string& f) { solvers::write_values(f, sys.b); });
     publish("x.txt", [&](const std::string& f) { solvers::write_values(f, sys.coordinates, D); });
@@ -36,12 +45,6 @@ class PressureSystemDump final : public System<D> {
   }
 
  private:
-  template <class Write>
-  void publish(const std::string& name, Write&& write) const {
-    auto target = dir_ / name, tmp = dir_ / (name + ".tmp");
-    write(tmp.string());
-    std::filesystem::rename(tmp, target);
-  }
   std::filesystem::path dir_;
   long long step_;
 };
