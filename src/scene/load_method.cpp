@@ -113,6 +113,10 @@ void load_method_section(toml::table& root, Validator& val, Scene& scene) {
       given.insert(k);
     }
   for (auto& k : spec.keys)
+    if (k.required && !values.contains(k.key))
+      val.fail(section, "method." + k.key,
+               "[method] of method " + method + " is missing required key '" + k.key + "'");
+  for (auto& k : spec.keys)
     if (!values.contains(k.key) && !k.default_value.empty() && k.default_value.front() != '(') {
       auto parsed = toml::parse("v = " + k.default_value);
       values.insert(k.key, *parsed["v"].node());
