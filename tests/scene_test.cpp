@@ -70,7 +70,8 @@ TEST_CASE("scene: unknown keys and sections name the place and the closest valid
   CHECK(error_of(base + "[meshod]\nname = \"wcsph\"\n") ==
         "bad.toml:16:2: unknown section 'meshod'; did you mean 'method'?");
   CHECK(error_of(base + "[method]\nname = \"wcspj\"\n") ==
-        "bad.toml:17:8: 'name' in [method] is 'wcspj'; allowed: isph, mps, swe, wcsph (did you mean 'wcsph'?)");
+        "bad.toml:17:8: 'name' in [method] is 'wcspj'; allowed: isph, mph, mps, swe, wcsph (did you mean "
+        "'wcsph'?)");
   load_plugins({RYUSHI_EXAMPLE_PLUGIN});  // the example's passive_scalar_diffusion (docs/extending.md)
   CHECK(error_of(base + "[[systems]]\nname = \"pasive_scalar_diffusion\"\n") ==
         "bad.toml:17:8: no system registered as 'pasive_scalar_diffusion'; did you mean 'passive_scalar_diffusion'?");

@@ -81,6 +81,8 @@ slow("isph: a resting tank keeps rho g depth and stays still with the one-set-up
 slow("energy: an ISPH sloshing tank with the one-set-up candidate never gains energy and keeps the period" 12)
 slow("cavity: the Re = 100 lid-driven cavity reaches Ghia's centreline velocities" 20)
 slow("surface tension: the paper's cube relaxes to a sphere near its Laplace pressure (coarse)" 14)
+slow("mph: a column at rest carries the weight of the liquid above (scenes/hydrostatic_mph_2d.toml)" 20)
+slow("mph: the block multigrid against CG and Jacobi-CG on the viscous dam break's velocity system" 11)
 
 # The check: every name above is a test of ryushi_tests or ryushi_stability_tests. Skipped when an
 # executable is not built yet (its list is undefined and ctest shows it as *_NOT_BUILT).
