@@ -224,6 +224,9 @@ TEST_CASE("mph: bad keys are exit 2 at the key") {
   CHECK(test::scene_error(scene("bulk_modulus = 1e6\nbulk_viscosity = 1e3"), {"solver.krylov=\"bicgstab\""})
             .find("krylov") != std::string::npos);
   CHECK(test::scene_error(scene("bulk_modulus = 1e6\nbulk_viscosity = 1e3")) == "");
+  // Nothing to set the first step: no gravity, no sliding surface, no [time] dt.
+  CHECK(test::scene_error(scene("bulk_modulus = 1e6\nbulk_viscosity = 1e3\n[physics]\ngravity = [0.0, 0.0]"))
+            .find("[time] dt") != std::string::npos);
 }
 
 TEST_CASE("mph: a viscous gravity current spreads as Huppert's similarity solution") {

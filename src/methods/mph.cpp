@@ -13,6 +13,7 @@
 // Walls are frozen particles of the same material (every layer within h_v of the fluid): they
 // enter the number density, the rates and the shear pairs with their surface velocity, which
 // makes the wall no-slip. docs/mph.md states these choices and what they were measured against.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -62,6 +63,17 @@ std::vector<KeySpec> mph_keys() {
   };
 }
 
+// The fastest sliding surface ([[solid]] velocity): without gravity, what sets the first steps.
+double surface_speed(const Scene& s) {
+  double fastest = 0;
+  for (const auto& b : s.solids) {
+    double v2 = 0;
+    for (double c : b.velocity) v2 += c * c;
+    fastest = std::max(fastest, std::sqrt(v2));
+  }
+  return fastest;
+}
+
 void resolve(Scene& sc, const toml::table& root, Validator& val) {
   if (sc.kernel != "mps")
     val.fail(root["particles"]["kernel"].node(), "particles.kernel",
@@ -76,6 +88,13 @@ void validate(const Scene& sc, const toml::table& root, Validator& val) {
   if (sc.solver.krylov != "cg")
     val.fail(root["solver"]["krylov"].node(), "solver.krylov",
              "method mph's velocity equation is symmetric positive definite: krylov must be \"cg\"");
+  double g2 = 0;
+  for (double c : sc.gravity) g2 += c * c;
+  if (g2 == 0 && surface_speed(sc) == 0 && sc.fixed_dt <= 0)
+    val.fail(
+        root["time"]["dt"].node(), "time.dt",
+        "method mph takes its step from the flow's speed: without gravity or a sliding [[solid]] nothing "
+        "sets the first one; give [time] dt");
   for (std::size_t i = 0; i < sc.solids.size(); ++i)
     if (sc.solids[i].moves())
       val.fail_entry(root, "solid", i, "displacement",
@@ -100,9 +119,11 @@ MphParameters<D> mph_parameters(const Scene& s) {
 }
 
 template <int D>
-VelocityTimeStep<D> mph_time_step(const MphParameters<D>& p) {
-  // The particles' speed plus what gravity adds within the step (velocity_time_step.hpp).
-  return VelocityTimeStep<D>(p.cfl, p.spacing, 0.0, 0.0, p.gravity.norm() > 0 ? p.gravity.norm() : 0.0);
+VelocityTimeStep<D> mph_time_step(const MphParameters<D>& p, double reference_speed) {
+  // The particles' speed plus what gravity adds within the step (velocity_time_step.hpp); without
+  // gravity the particles' speed, at least the fastest sliding surface's.
+  const double g = p.gravity.norm();
+  return VelocityTimeStep<D>(p.cfl, p.spacing, g > 0 ? 0.0 : reference_speed, 0.0, g);
 }
 
 template <int D>
@@ -137,8 +158,9 @@ MethodSetup<D> build_mph(const Scene& s, World<D>& world, const PipelineOptions&
   };
   if (!options.dump_matrix_dir.empty())  // after the solve, before the next step's time step
     m.pipeline.push_back(std::make_shared<MphSystemDump<D>>(options.dump_matrix_dir, options.dump_step));
-  if (s.fixed_dt <= 0) m.pipeline.push_back(std::make_shared<VelocityTimeStep<D>>(mph_time_step<D>(p)));
-  m.first_dt = mph_time_step<D>(p).limit(0.0);
+  const auto step = mph_time_step<D>(p, surface_speed(s));
+  if (s.fixed_dt <= 0) m.pipeline.push_back(std::make_shared<VelocityTimeStep<D>>(step));
+  m.first_dt = step.limit(0.0);
   m.density_may_vanish = true;
   char b[160];
   std::snprintf(b, sizeof b, "h_p = %.4g m, h_v = %.4g m, n0 = %.4f, ", p.h_p, p.h_v, p.n0);
