@@ -81,8 +81,7 @@ TEST_CASE("mph: the weights' constants make the operators exact on the lattice")
   CHECK(shear[0] == doctest::Approx(2 * p.mu).epsilon(1e-12));
   CHECK(std::abs(shear[1]) < 1e-12 * p.mu);
   CHECK(n == doctest::Approx(p.n0).epsilon(1e-12));
-  // The paper's continuous normalisation would put n0 at 0.55 and the force at 1.8 grad psi
-  // (mph_parameters.hpp): the lattice's n0 is that 0.55.
+  // n0 is the lattice's 0.551, not 1: the density change is n - n0 (mph_parameters.hpp).
   CHECK(p.n0 == doctest::Approx(0.5513).epsilon(1e-3));
 }
 
