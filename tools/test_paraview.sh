@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The real-client test (`make test-paraview`): short WCSPH, MPS, 3D, shallow-water and heat runs opened in ParaView's
+# The real-client test (`make test-paraview`): short WCSPH, MPS, MPH-I, 3D, shallow-water and heat runs opened in ParaView's
 # own readers (XDMFReader, Xdmf3ReaderS, Xdmf3ReaderT and OpenDataFile's choice) under a virtual
 # display. tools/paraview_check.py asserts point and cell counts, array names and components,
 # the frame times and a non-empty picture per reader; then `ryushi render` (PNGs, MP4, a 3D
@@ -63,7 +63,10 @@ check elastic "$work/elastic" 0,0.02,0.04 --tensors stress --arrays velocity,kin
 "$ryushi" run scenes/square_drop_2d.toml --out "$work/square_drop" --quiet --end-time 0.008
 check square_drop "$work/square_drop" 0,0.004,0.008 --arrays velocity,pressure,curvature,surface_pressure,tension_normal \
   --color surface_pressure
-echo "test-paraview: 9 particle sets x 4 readers passed; screenshots in $images"
+# MPH-I (docs/mph.md): the viscous dam break, coloured by pressure, with its number density.
+"$ryushi" run scenes/dam_break_viscous_mph_2d.toml --out "$work/mph" --quiet --end-time 0.02 --set output.interval=0.01
+check mph "$work/mph" 0,0.01,0.02 --arrays velocity,pressure,density,kind,id,number_density
+echo "test-paraview: 10 particle sets x 4 readers passed; screenshots in $images"
 
 # Pictures without ParaView: every frame and a movie, a 3D slice, and a clean refusal.
 "$ryushi" render "$work/wcsph" --movie >/dev/null
