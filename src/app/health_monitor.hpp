@@ -52,6 +52,7 @@ class WallCells {
     Vec<D> lo = Vec<D>::Constant(1e300), hi = Vec<D>::Constant(-1e300);
     for (std::size_t i = 0; i < w.size(); ++i)
       if (kind[i] == kWall || kind[i] == kDummy) lo = lo.cwiseMin(x[i]), hi = hi.cwiseMax(x[i]);
+    marked_.clear();
     if (lo[0] > hi[0]) return;
     inv_ = 1 / spacing;
     origin_ = lo - Vec<D>::Constant(0.5 * spacing);  // lattice walls' centres mid-cell
@@ -124,6 +125,10 @@ class HealthMonitor {
     const bool solids_move =
         std::any_of(sc.solids.begin(), sc.solids.end(), [](auto& s) { return s.moves(); });
     if (spec_.wall_penetration && !solids_move) walls_.build(w, ctx.spacing);
+    // A [[systems]] entry may move wall particles itself (elastic_line_contact's surface): the
+    // cells are then marked again at every check, from where the walls are.
+    rebuild_walls_ = !walls_.empty() && !sc.systems.empty();
+    spacing_ = ctx.spacing;
     // The scales, from the start.
     auto& x = w.column(components::position);
     auto& v = w.column(components::velocity);
@@ -174,6 +179,7 @@ class HealthMonitor {
   // The first broken check after the step that reached `time` (density, walls, pressure, energy in
   // that order), or none.
   std::optional<HealthFinding> check(const World<D>& w, double time) {
+    if (rebuild_walls_) walls_.build(w, spacing_);
     const Pass r = pass(w);
     if (r.deviation > extremes_.density_deviation)
       extremes_.density_deviation = r.deviation, extremes_.density_time = time;
@@ -326,6 +332,8 @@ class HealthMonitor {
   Vec<D> gravity_ = Vec<D>::Zero();
   bool check_energy_ = false;
   WallCells<D> walls_;
+  bool rebuild_walls_ = false;
+  double spacing_ = 0;
 };
 
 }  // namespace ryushi

@@ -4,6 +4,8 @@
 // scheduler places them in the flow graph by their declared access.
 //
 //   RYUSHI_REGISTER_SYSTEM(MySystem, "my_system", "What it does.", { KeySpec... });
+// optionally followed by what the method must provide and a check across the scene's sections
+// (SystemKeys::validate).
 // where MySystem<D> has a constructor MySystem(const toml::table& params, const MethodContext<D>&):
 // the method-neutral context (kernel, spacing, domain, gravity, material, method name), so the
 // same system runs under every method.
@@ -14,8 +16,9 @@
 #include <vector>
 
 #include "ecs/system.hpp"
-#include "scene/schema.hpp"
 #include "methods/method_context.hpp"
+#include "scene/registered_keys.hpp"
+#include "scene/schema.hpp"
 
 namespace ryushi {
 
@@ -25,6 +28,7 @@ struct SystemRegistryEntry {
   std::vector<std::string> needs;  // what the method must provide (SystemKeys::needs)
   std::function<SystemPtr<2>(const toml::table&, const MethodContext<2>&)> make2;
   std::function<SystemPtr<3>(const toml::table&, const MethodContext<3>&)> make3;
+  decltype(SystemKeys::validate) validate{};  // SystemKeys::validate
 };
 
 // Throws std::logic_error for a name already registered (by ryushi or a plugin).
@@ -46,10 +50,14 @@ SystemPtr<D> make_registered_system(const std::string& name, const toml::table& 
 
 template <template <int> class T>
 SystemRegistryEntry registry_entry(std::string doc, std::vector<KeySpec> params,
-                                   std::vector<std::string> needs = {}) {
-  return {std::move(doc), std::move(params), std::move(needs),
+                                   std::vector<std::string> needs = {},
+                                   decltype(SystemKeys::validate) validate = {}) {
+  return {std::move(doc),
+          std::move(params),
+          std::move(needs),
           [](const toml::table& p, const MethodContext<2>& w) { return std::make_shared<T<2>>(p, w); },
-          [](const toml::table& p, const MethodContext<3>& w) { return std::make_shared<T<3>>(p, w); }};
+          [](const toml::table& p, const MethodContext<3>& w) { return std::make_shared<T<3>>(p, w); },
+          std::move(validate)};
 }
 
 #define RYUSHI_CONCAT_INNER(a, b) a##b

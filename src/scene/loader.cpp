@@ -275,6 +275,8 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
         val.fail(root["systems"][i]["name"].node(), "systems." + std::to_string(i) + ".name",
                  "system '" + sc.systems[i].name + "' needs " + need + ", which method '" + sc.method +
                      "' does not provide with this scene's [method] keys");
+  for (std::size_t i = 0; i < sc.systems.size(); ++i)
+    if (auto& check = find_system_keys(sc.systems[i].name)->validate) check(sc, root, i, val);
   // The neighbour search's cell grid covers the domain with cells of the support radius (4
   // bytes per cell): a domain far larger than the particles' extent at a tiny spacing (1e-6 m
   // particles in a 1e4 m box) would ask for more memory than the machine has.

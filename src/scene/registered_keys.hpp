@@ -116,10 +116,13 @@ std::vector<std::string> methods_owning_key(const std::string& key);
 // A registered system's [[systems]] keys (besides name) and its line for docs/scenes.md.
 // `needs`: what the scene's method must provide for the system to run (MethodHooks::provides),
 // e.g. "free_surface_pressure": free-surface rows whose Dirichlet value a system may set.
+// `validate`: the checks across sections of a system's entry (the `entry`th of [[systems]]),
+// after the whole scene is read; unset: none.
 struct SystemKeys {
   std::string doc;
   std::vector<KeySpec> keys;
   std::vector<std::string> needs{};
+  std::function<void(const Scene&, const toml::table& root, std::size_t entry, Validator&)> validate{};
 };
 bool register_system_keys(const std::string& name, SystemKeys keys);  // as register_method_spec
 void unregister_system_keys(const std::string& name);
