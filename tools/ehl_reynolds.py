@@ -44,7 +44,7 @@ def deformation_matrix(x, dx, modulus):
     return -(2.0 / (math.pi * modulus)) * (primitive(upper) - primitive(lower))
 
 
-def solve_reynolds(x, dx, h, mu, U):
+def solve_reynolds(x, dx, h, mu, U, p_inlet=0.0):
     """p with p = 0 at the inlet node and from the outlet node k on, the largest k for which p >= 0
     everywhere: the film cavitates where the pressure would fall below zero, and there
     p = dp/dx = 0 to the grid's resolution (Swift-Stieber). One cavitated region, downstream."""
@@ -53,16 +53,19 @@ def solve_reynolds(x, dx, h, mu, U):
     source = np.zeros(n)
     source[1:-1] = 6 * mu * U * (h[2:] - h[:-2]) / 2 * dx
 
-    def with_outlet(k):  # p_0 = p_k = 0, the nodes 1 .. k-1 solved, zero beyond
+    def with_outlet(k):  # p_0 = p_inlet, p_k = 0, the nodes 1 .. k-1 solved, zero beyond
         p = np.zeros(n)
+        p[0] = p_inlet
         inner = np.arange(1, k)
         if len(inner) == 0:
             return p
+        rhs = source[inner].copy()
+        rhs[0] -= h_face[0] * p_inlet
         bands = np.zeros((3, len(inner)))  # solve_banded's layout: upper, diagonal, lower
         bands[1] = -(h_face[inner - 1] + h_face[inner])
         bands[0, 1:] = h_face[inner[:-1]]
         bands[2, :-1] = h_face[inner[:-1]]
-        p[inner] = solve_banded((1, 1), bands, source[inner])
+        p[inner] = solve_banded((1, 1), bands, rhs)
         return p
 
     lo, hi = 2, n - 1  # the largest k in [lo, hi] whose p has no negative value
@@ -77,7 +80,7 @@ def solve_reynolds(x, dx, h, mu, U):
     return with_outlet(lo)
 
 
-def solve(R, modulus, W, U, mu, h_guess, cells, x_in, x_out, relax=0.1, iterations=20000, tol=1e-9):
+def solve(R, modulus, W, U, mu, h_guess, cells, x_in, x_out, relax=0.1, iterations=20000, tol=1e-9, p_inlet=0.0):
     # The length unit: the Hertz half-width, or for a stiff body the rigid film's own width.
     b_hertz = max(math.sqrt(4 * W * R / (math.pi * modulus)), math.sqrt(2 * R * h_guess))
     x = np.linspace(x_in * b_hertz, x_out * b_hertz, cells + 1)
@@ -89,7 +92,7 @@ def solve(R, modulus, W, U, mu, h_guess, cells, x_in, x_out, relax=0.1, iteratio
         h = h0 + x * x / (2 * R) + K @ p
         if h.min() <= 0:
             raise RuntimeError(f"the film closed (h0 = {h0:.3e}); lower relax")
-        p_new = solve_reynolds(x, dx, h, mu, U)
+        p_new = solve_reynolds(x, dx, h, mu, U, p_inlet)
         load = np.sum(p_new) * dx
         change = np.abs(p_new - p).max() / max(np.abs(p_new).max(), 1e-30)
         p = p + relax * (p_new - p)
@@ -115,6 +118,10 @@ def main():
     ap.add_argument("--outlet", type=float, default=2.0, help="outlet, in the same unit")
     ap.add_argument("--relax", type=float, default=0.1)
     ap.add_argument("--csv", help="write x, p, h here")
+    ap.add_argument("--table", help="write inlet (b), central film, minimum film, its place (b), peak pressure, "
+                                    "one row per inlet of --inlets, here (the MPH-I test's reference)")
+    ap.add_argument("--inlets", default="-1.5,-1.6,-1.7,-1.8,-1.9,-2.0,-2.2,-2.4,-2.6,-2.8,-3.0,-3.5,-4.0",
+                    help="inlets (in b) for --table")
     ap.add_argument("--check", action="store_true",
                     help="solve a rigid cylinder (E = 1e13 Pa, 3200 cells from -64 to 3 film widths) and compare with "
                          "Martin's h_min = 4.895 eta u_e R / W (the constant from the Reynolds-condition integral); "
@@ -127,6 +134,19 @@ def main():
         error = h.min() / martin - 1
         print(f"rigid cylinder: minimum film {h.min() * 1e6:.4f} um against Martin's {martin * 1e6:.4f} um ({error:+.2%})")
         raise SystemExit(0 if abs(error) < 0.005 else 1)
+    if a.table:
+        u_e = a.speed / 2
+        johnson = 3.01 * math.sqrt(a.load ** 2 / (a.viscosity * u_e * a.modulus * a.radius)) ** 0.8 * a.viscosity * u_e * a.radius / a.load
+        rows = []
+        for inlet in [float(t) for t in a.inlets.split(",")]:
+            x, p, h, load, its, b = solve(a.radius, a.modulus, a.load, a.speed, a.viscosity, johnson, a.cells,
+                                          inlet, a.outlet, a.relax)
+            k = int(np.argmin(h))
+            rows.append([inlet, np.interp(0.0, x, h), h[k], x[k] / b, p.max()])
+            print(f"inlet {inlet:+.2f} b: central {rows[-1][1] * 1e6:.2f} um, minimum {h[k] * 1e6:.2f} um")
+        np.savetxt(a.table, np.array(rows), delimiter=",", fmt="%.8g",
+                   header="inlet_b,central_film_m,minimum_film_m,minimum_at_b,peak_pressure_pa", comments="")
+        return
     u_e = a.speed / 2
     g_e = math.sqrt(a.load ** 2 / (a.viscosity * u_e * a.modulus * a.radius))
     johnson = 3.01 * g_e ** 0.8 * a.viscosity * u_e * a.radius / a.load

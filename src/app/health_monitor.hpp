@@ -129,6 +129,7 @@ class HealthMonitor {
     // cells are then marked again at every check, from where the walls are.
     rebuild_walls_ = !walls_.empty() && !sc.systems.empty();
     spacing_ = ctx.spacing;
+    if (rebuild_walls_) wall_signature_ = wall_signature(w);
     // The scales, from the start.
     auto& x = w.column(components::position);
     auto& v = w.column(components::velocity);
@@ -179,7 +180,10 @@ class HealthMonitor {
   // The first broken check after the step that reached `time` (density, walls, pressure, energy in
   // that order), or none.
   std::optional<HealthFinding> check(const World<D>& w, double time) {
-    if (rebuild_walls_) walls_.build(w, spacing_);
+    if (rebuild_walls_) {  // only when a wall moved: the grid spans the whole wall extent
+      const double moved = wall_signature(w);
+      if (moved != wall_signature_) walls_.build(w, spacing_), wall_signature_ = moved;
+    }
     const Pass r = pass(w);
     if (r.deviation > extremes_.density_deviation)
       extremes_.density_deviation = r.deviation, extremes_.density_time = time;
@@ -333,7 +337,16 @@ class HealthMonitor {
   bool check_energy_ = false;
   WallCells<D> walls_;
   bool rebuild_walls_ = false;
-  double spacing_ = 0;
+  double spacing_ = 0, wall_signature_ = 0;
+  // The sum of the wall particles' coordinates, weighted by index: changes when any of them moves.
+  static double wall_signature(const World<D>& w) {
+    auto& x = w.column(components::position);
+    auto& kind = w.column(components::kind);
+    double s = 0;
+    for (std::size_t i = 0; i < w.size(); ++i)
+      if (kind[i] == kWall || kind[i] == kDummy) s += double(i + 1) * x[i].sum();
+    return s;
+  }
 };
 
 }  // namespace ryushi

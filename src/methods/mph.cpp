@@ -184,6 +184,9 @@ MethodSpec mph_spec() {
   spec.hooks.bytes_per_particle = [](int dimension) { return dimension == 2 ? 6000.0 : 40000.0; };
   spec.hooks.resolve = resolve;
   spec.hooks.validate = validate;
+  // Frozen walls with a face distance (wall_depth), which a system may place and move itself
+  // (elastic_line_contact).
+  spec.hooks.provides = [](const Scene&) { return std::vector<std::string>{"wall_depth"}; };
   return spec;
 }
 
