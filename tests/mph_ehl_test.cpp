@@ -73,10 +73,7 @@ double interpolate(const std::vector<double>& x, const std::vector<double>& y, d
 
 }  // namespace
 
-TEST_CASE(
-    "mph: a soft-EHL line contact settles on the Reynolds solution of the same contact (scaled g_E, the "
-    "central "
-    "film known 7% thick)") {
+TEST_CASE("mph: a soft-EHL line contact settles on the Reynolds solution of the same contact (scaled g_E)") {
   auto dir = test::scratch("mph_ehl");
   RunOptions opt;
   opt.scene = test::scene_path("ehl_soft_mph_2d.toml");
@@ -118,19 +115,7 @@ TEST_CASE(
   MESSAGE("inlet ", inlet_b, " b; load ", load, " N/m; central film ", h_central * 1e6, " um (reference ",
           ref_central * 1e6, "), minimum ", h_min * 1e6, " um (reference ", ref_min * 1e6, ")");
   CHECK(std::abs(h_min / ref_min - 1) < 0.05);
-  // The central film is the known gap (issue 55 asks 5%): MPH-I's film carries more pressure than
-  // Reynolds' on the same film (a rigid cylinder at a fixed 2 mm gap: 1.2 times the load at 5 and
-  // at 10 spacings across, and at R = 25 mm as at 100 mm), so at the same load its film is thicker
-  // upstream of the minimum: +6.9% at l = 0.4 mm, +7.4% at 0.3 mm, +6.0% with bulk_viscosity = 10
-  // (docs/mph.md). Asserted: that signature, between +3% and +10%; within 5% the gap is closed and
-  // this is to become a 5% check.
-  const double central_error = h_central / ref_central - 1;
-  CHECK_MESSAGE(central_error > 0.03, "the central film is within "
-                                          << central_error * 100
-                                          << "% of the reference: the known gap may be "
-                                             "closed; assert 5% here");
-  CHECK_MESSAGE(central_error < 0.10,
-                "the central film is " << central_error * 100 << "% off the reference, beyond the known gap");
+  CHECK(std::abs(h_central / ref_central - 1) < 0.05);
   // Herrebrugh's isoviscous-elastic regime (Johnson, Contact Mechanics, 13.5): h_min = 3.01
   // g_E^0.8 eta u_e R / W with u_e = U / 2, g_E = (W^2 / (eta u_e E R))^(1/2) = 5.56: 1.972 mm.
   const double u_e = U / 2, g_E = std::sqrt(W * W / (mu * u_e * E * R));

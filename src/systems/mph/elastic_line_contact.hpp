@@ -109,9 +109,7 @@ class ElasticLineContact : public System<D> {
         if (kind[i] == kWall) speed_ = std::max(speed_, v[i].norm());
       if (!(speed_ > 0))
         throw std::invalid_argument(
-            "elastic_line_contact: no wall slides (a [[solid]] with a velocity): the plate's speed sets its "
-            "time "
-            "scale");
+            "elastic_line_contact: no wall slides; the scene's check should have said so");
       entrainment_time_ = hertz_half_width() / speed_;
     }
     if (p_.hertz_start) {
