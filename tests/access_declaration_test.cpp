@@ -140,7 +140,7 @@ std::string joined(const std::vector<std::string>& lines) {
 std::string registry_scene(const std::map<std::string, std::string>& params) {
   std::string text = test::block_scene("[0.2, 0.2]", "[0.6, 0.6]", 1.0);
   for (auto& name : system_registry_names()) {
-    if (!system_registry_entry(name).needs.empty()) continue;
+    if (!system_registry_entry(name).keys.needs.empty()) continue;
     auto it = params.find(name);
     REQUIRE_MESSAGE(it != params.end(), "registered system '" << name << "' has no parameters in this test");
     text += "[[systems]]\nname = \"" + name + "\"\n" + it->second;

@@ -17,8 +17,7 @@ std::map<std::string, SystemRegistryEntry>& registry() {
 
 bool register_system(const std::string& name, SystemRegistryEntry entry) {
   // The loader checks [[systems]] keys against the scene layer's copy of them.
-  if (!register_system_keys(name, SystemKeys{entry.doc, entry.params, entry.needs, entry.validate}))
-    return false;  // a name taken
+  if (!register_system_keys(name, entry.keys)) return false;  // a name taken
   registry().emplace(name, std::move(entry));
   return true;
 }

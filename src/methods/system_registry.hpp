@@ -23,12 +23,9 @@
 namespace ryushi {
 
 struct SystemRegistryEntry {
-  std::string doc;
-  std::vector<KeySpec> params;
-  std::vector<std::string> needs;  // what the method must provide (SystemKeys::needs)
+  SystemKeys keys;  // doc, [[systems]] keys, needs, validate: what the scene loader checks
   std::function<SystemPtr<2>(const toml::table&, const MethodContext<2>&)> make2;
   std::function<SystemPtr<3>(const toml::table&, const MethodContext<3>&)> make3;
-  decltype(SystemKeys::validate) validate{};  // SystemKeys::validate
 };
 
 // Throws std::logic_error for a name already registered (by ryushi or a plugin).
@@ -52,12 +49,9 @@ template <template <int> class T>
 SystemRegistryEntry registry_entry(std::string doc, std::vector<KeySpec> params,
                                    std::vector<std::string> needs = {},
                                    decltype(SystemKeys::validate) validate = {}) {
-  return {std::move(doc),
-          std::move(params),
-          std::move(needs),
+  return {SystemKeys{std::move(doc), std::move(params), std::move(needs), std::move(validate)},
           [](const toml::table& p, const MethodContext<2>& w) { return std::make_shared<T<2>>(p, w); },
-          [](const toml::table& p, const MethodContext<3>& w) { return std::make_shared<T<3>>(p, w); },
-          std::move(validate)};
+          [](const toml::table& p, const MethodContext<3>& w) { return std::make_shared<T<3>>(p, w); }};
 }
 
 #define RYUSHI_CONCAT_INNER(a, b) a##b
