@@ -110,7 +110,6 @@ class ElasticLineContact : public System<D> {
       if (!(speed_ > 0))
         throw std::invalid_argument(
             "elastic_line_contact: no wall slides; the scene's check should have said so");
-      entrainment_time_ = hertz_half_width() / speed_;
     }
     if (p_.hertz_start) {
       // Hertz's dry pressure p0 sqrt(1 - s^2 / b^2) and its deformation; the film `gap` at the
@@ -120,16 +119,12 @@ class ElasticLineContact : public System<D> {
         const double s = (x_[c] - p_.centre) / b;
         pressure_[c] = std::abs(s) < 1 ? p0 * std::sqrt(1 - s * s) : 0.0;
       }
-      for (std::size_t i = 0; i < columns_; ++i) {
-        deformation_[i] = 0;
-        for (std::size_t j = 0; j < columns_; ++j)
-          deformation_[i] += kernel_[i * columns_ + j] * pressure_[j];
-      }
+      for (std::size_t i = 0; i < columns_; ++i) deformation_[i] = deformation_of_pressure(i);
       const std::size_t middle = std::min<std::size_t>(
           columns_ - 1, static_cast<std::size_t>(std::max(0.0, std::round((p_.centre - p_.from) / l))));
       approach_ = -deformation_[middle];
     }
-    for (std::size_t c = 0; c < columns_; ++c) face_[c] = undeformed(c) + deformation_[c] + approach_;
+    update_face();
     {
       auto& x = world.column(components::position);
       auto& kind = world.column(components::kind);
@@ -176,22 +171,18 @@ class ElasticLineContact : public System<D> {
     // Two first-order lags of lag / 2 each, on the pressure and on the deformation: the second
     // takes out the step-to-step (period-2) part of the loop through the squeeze film, which a
     // single lag of 0.6 b / U left at +-80% of the load.
-    const double follow = std::min(1.0, 2 * dt / (p_.lag * entrainment_time_));
+    const double follow = std::min(1.0, 2 * dt * speed_ / (p_.lag * hertz_half_width()));  // lag in b / U
     double carried = 0;
     for (std::size_t c = 0; c < columns_; ++c) {
       const double now = count_[c] ? sum_[c] / count_[c] : 0.0;
       pressure_[c] += follow * (now - pressure_[c]);
       carried += pressure_[c] * l;
     }
-    load_ = carried;
     approach_ += p_.approach_rate * speed_ * dt * std::clamp(carried / p_.load - 1, -1.0, 1.0);
     tbb::parallel_for(std::size_t(0), columns_, [&](std::size_t i) {
-      double target = 0;
-      const double* row = &kernel_[i * columns_];
-      for (std::size_t j = 0; j < columns_; ++j) target += row[j] * pressure_[j];
-      deformation_[i] += follow * (target - deformation_[i]);
+      deformation_[i] += follow * (deformation_of_pressure(i) - deformation_[i]);
     });
-    for (std::size_t c = 0; c < columns_; ++c) face_[c] = undeformed(c) + deformation_[c] + approach_;
+    update_face();
     move(x, v, normal, depth, slot, film_p, film_h, film_x, dt);
     if (p_.recycle && !domain.periodic[0]) {
       const double length = domain.max[0] - domain.min[0];
@@ -206,21 +197,31 @@ class ElasticLineContact : public System<D> {
   }
 
   std::vector<double> checkpoint_state(const World<D>&, const Resources&) const override {
-    std::vector<double> s{approach_, load_, speed_, entrainment_time_};
+    std::vector<double> s{approach_, speed_};
     s.insert(s.end(), deformation_.begin(), deformation_.end());
     s.insert(s.end(), pressure_.begin(), pressure_.end());
     return s;
   }
   void restore_state(const World<D>&, Resources&, std::span<const double> s) override {
-    if (s.size() != 4 + 2 * columns_)
+    if (s.size() != 2 + 2 * columns_)
       throw std::runtime_error("elastic_line_contact: the checkpoint's surface has another size");
-    approach_ = s[0], load_ = s[1], speed_ = s[2], entrainment_time_ = s[3];
-    std::copy(s.begin() + 4, s.begin() + 4 + columns_, deformation_.begin());
-    std::copy(s.begin() + 4 + columns_, s.end(), pressure_.begin());
-    for (std::size_t c = 0; c < columns_; ++c) face_[c] = undeformed(c) + deformation_[c] + approach_;
+    approach_ = s[0], speed_ = s[1];
+    std::copy(s.begin() + 2, s.begin() + 2 + columns_, deformation_.begin());
+    std::copy(s.begin() + 2 + columns_, s.end(), pressure_.begin());
+    update_face();
   }
 
  private:
+  void update_face() {  // eq. 1
+    for (std::size_t c = 0; c < columns_; ++c) face_[c] = undeformed(c) + deformation_[c] + approach_;
+  }
+  // Eq. 1's deformation at column i of the columns' pressure: row i of K times p.
+  double deformation_of_pressure(std::size_t i) const {
+    const double* row = &kernel_[i * columns_];
+    double v = 0;
+    for (std::size_t j = 0; j < columns_; ++j) v += row[j] * pressure_[j];
+    return v;
+  }
   double hertz_half_width() const {
     return std::sqrt(4 * p_.load * p_.radius / (std::numbers::pi * p_.modulus));
   }
@@ -273,8 +274,8 @@ class ElasticLineContact : public System<D> {
   std::vector<double> x_, kernel_, deformation_, pressure_, face_, sum_;
   std::vector<std::size_t> count_;
   double rho0_;
-  double approach_ = 0, load_ = 0;
-  double speed_ = 0, entrainment_time_ = 1;  // U and b / U
+  double approach_ = 0;
+  double speed_ = 0;  // U, the plate's
 };
 
 }  // namespace ryushi
