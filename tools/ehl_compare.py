@@ -18,8 +18,8 @@ import glob
 import json
 import math
 import os
-import re
 import sys
+import tomllib
 
 import h5py
 import numpy as np
@@ -29,19 +29,16 @@ from ehl_reynolds import solve, solve_reynolds  # noqa: E402
 
 
 def contact_keys(scene_text):
-    """The elastic_line_contact table's numbers, and the scene's spacing, viscosity and the plate's speed."""
-    def number(key, text):
-        m = re.search(r"^\s*" + key + r"\s*=\s*([-+0-9.eE]+)", text, re.M)
-        return float(m.group(1)) if m else None
-    block = scene_text[scene_text.index('"elastic_line_contact"'):]
-    block = block.split("[[", 1)[0]
-    keys = {k: number(k, block) for k in ("radius", "modulus", "load", "centre", "plate")}
-    keys["spacing"] = number("spacing", scene_text)
-    keys["viscosity"] = number("viscosity", scene_text)
-    vel = re.search(r"velocity\s*=\s*\[\s*([-+0-9.eE]+)", scene_text)
-    keys["speed"] = float(vel.group(1))
-    keys["centre"] = keys["centre"] or 0.0
-    keys["plate"] = keys["plate"] or 0.0
+    """The elastic_line_contact entry's numbers, the scene's spacing and viscosity, and the plate's speed
+    (the fastest [[solid]] velocity)."""
+    scene = tomllib.loads(scene_text)
+    entry = next(t for t in scene.get("systems", []) if t.get("name") == "elastic_line_contact")
+    keys = {k: entry.get(k) for k in ("radius", "modulus", "load")}
+    keys["centre"] = entry.get("centre", 0.5 * (scene["domain"]["min"][0] + scene["domain"]["max"][0]))
+    keys["plate"] = entry.get("plate", 0.0)
+    keys["spacing"] = scene["particles"]["spacing"]
+    keys["viscosity"] = scene["material"]["viscosity"]
+    keys["speed"] = max(math.hypot(*s.get("velocity", [0.0])) for s in scene.get("solid", [{}]))
     return keys
 
 
